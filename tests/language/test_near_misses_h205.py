@@ -80,7 +80,9 @@ def test_a_count_through_a_state_word_is_checked_against_the_scene():
 
 
 def test_stays_is_read_only_where_the_thing_is_named_and_nothing_else_follows():
-    assert unmoved_said("The mug stays in the sink.") == "The mug stays in the sink."
+    # where it stays is where it is now (h236): kept there, not a placing ("the keys stay on the table")
+    assert unmoved_said("The mug stays in the sink.") == "don't move the mug."
+    assert unmoved_said("The mug stays in the sink to soak.") == "The mug stays in the sink to soak."
     assert unmoved_said("Put it in the fridge so it stays cold.") == "Put it in the fridge so it stays cold."
     assert unmoved_said("The banana stays put.") == "The banana stays put."  # no such name: left to refuse
 

@@ -58,6 +58,7 @@ from nl2hltl2plan.language.landmarks import (
     on_the_place,
     pair_start,
     posture_at,
+    relative_subject,
 )
 from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.mention_use import lamps_off, looked_at, unused_mentions
@@ -89,8 +90,8 @@ from nl2hltl2plan.language.unsupported_steps import (
     started,
     treated_after_placing,
     under_a_place,
-    vague_words,
 )
+from nl2hltl2plan.language.vague_words import vague_words
 
 NAVIGATION = frozenset({"go", "walk", "head", "come", "run", "move", "turn"})  # "move to the sink", no object
 
@@ -298,13 +299,12 @@ def _locative(
     implied: list[Mention],
     mentions: list[Mention],
 ) -> bool:
-    """A place named only to say where something is: "from the counter", or, next to the place the
-    task uses in the same clause, "the drawer by the stove", "the lamp on the desk", "between the sink
-    and the stove"; after "next to" / "by" / "between", the place may be one a treatment implies ("next to
-    the lettuce in the refrigerator" of a cooled apple)."""
+    """A place named only to say where something is: "from the counter", "the bowl the mug is in", or, next
+    to the place the task uses in the same clause, "the drawer by the stove", "between the sink and the
+    stove"; after "next to" / "by" / "between", the place may be one a treatment implies."""
     start = pair_start(toks, m.start)  # the second place of "between A and B" is read as A is
     i = preposition_before(toks, start, LOCATIVE)
-    if _walked_to(toks, m.start):
+    if _walked_to(toks, m.start) or relative_subject(instruction, m, mentions):
         return True
     close_to = 0 <= i < len(toks) - 1 and toks[i][0] == "close" and toks[i + 1][0] == "to"  # as "next to"
     sliced = toks[i][0] == "of" and "verb_sliced" in categories(toks[i - 1][0]) if i > 0 else False

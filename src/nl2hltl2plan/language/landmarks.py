@@ -396,3 +396,25 @@ def put_away_unread(text: str) -> list[Unread]:
             why = f"is {m['place']} where {m['thing']} is, or where it goes? say where to put it away"
             out.append(Unread(m[0].strip(), "place", why))
     return out
+
+
+# "the bowl (that) the mug is in", "the shelf the vase is next to": a relative clause that leaves its
+# preposition at its end (nothing named after it) says where the thing before it is; its subject is a
+# landmark, never a destination or a second task (h227's leftover, h236)
+_STRANDED_WHERE = re.compile(
+    r"\s+(?:is|are|'s|sits|was)\s+(?:(?:sitting|lying|standing|now|already)\s+)?"
+    r"(?:next\s+to|close\s+to|in|on|by|beside|near|inside|at|under|behind)"
+    r"(?=\s*(?:[,.;!?]|$|(?:in|into|on|onto|to|and|then|please)\b))",
+    re.I,
+)
+_AFTER_A_NAME = re.compile(r"\s+(?:(?:that|which)\s+)?(?:the|a|an|my|your|our)\s+$", re.I)
+
+
+def relative_subject(instruction: str, m: Mention, mentions: list[Mention]) -> bool:
+    """Is `m` the subject of such a relative clause, right after another thing's name?"""
+    before = [x for x in mentions if x.char_end <= m.char_start]
+    return bool(
+        before
+        and _AFTER_A_NAME.fullmatch(instruction, before[-1].char_end, m.char_start)
+        and _STRANDED_WHERE.match(instruction, m.char_end)
+    )

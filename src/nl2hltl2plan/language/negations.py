@@ -237,9 +237,11 @@ def _read_clause(
         contrast = _contrasted_place(text, toks, i, inside, mentions, grounder, look)
         if contrast is not None:  # "put the tomato in the fridge, not the microwave"
             return _negation(text, toks, i, end_tok, end_tok, "put", *contrast)
-    if verb is None or not inside:
+    if verb in _DONE_TO_IT and not inside and j + 1 < cut and words[j + 1] in ("it", "them"):
+        inside = []  # "put the apple in the fridge, don't heat it": the pronoun alone names the thing
+    elif verb is None or not inside:
         return None
-    if PRONOUNS & set(words[j + 1 : inside[0].start]):  # "don't put it in the sink": it is a thing
+    if PRONOUNS & set(words[j + 1 : inside[0].start if inside else cut]):  # "don't put it in the sink"
         antecedent = _previous_object(text, toks, i, mentions)
         if antecedent is None:
             return None
@@ -247,7 +249,7 @@ def _read_clause(
     things, where = _objects_and_places(inside, words, grounder)
     if things is None:
         return None
-    if verb == "put" and not where and "there" in words[j + 1 : cut]:  # "don't put the knife there"
+    if verb == "put" and not where and _there_or_in_it(words[j + 1 : cut]):  # "don't put the fork in it"
         where = _previous_destination(text, toks, i, mentions, grounder)
         if not where:
             return None
@@ -261,6 +263,12 @@ def _read_clause(
         spans = [text[toks[_determined(words, m.start)][1] : m.char_end] for m in named]
         neg.thing, neg.several = " and ".join(spans), len(named) > 1 or named[0].plural
     return neg
+
+
+def _there_or_in_it(words: list[str]) -> bool:
+    """Does a negated placing name its place by "there" or by "in/on it" (the place said before: "put the egg
+    in the fridge, don't put the apple in it" forbids the fridge only, never every placing of the apple)?"""
+    return "there" in words or any(a in PREPS and b == "it" for a, b in itertools.pairwise(words))
 
 
 def _determined(words: list[str], k: int) -> int:
@@ -341,6 +349,9 @@ def _objects_and_places(
 
 
 PRONOUNS = frozenset({"it", "them", "this", "that", "these", "those"})  # that stand for a thing named before
+# what may be forbidden of "it" alone, the thing said before: done to a thing, never to a place ("don't open
+# it" after "in the fridge" may be the fridge) nor its move (the task moves it)
+_DONE_TO_IT = frozenset({"heat", "cool", "clean", "slice", "break"})
 
 
 def _previous_object(
@@ -491,9 +502,14 @@ def until_guard(instruction: str, tok: tuple[str, int, int], ordered: bool) -> b
 # went, at exit 0 (h205)
 _NP = r"(?:the|a|an|both|all\s+the)\s+[a-z]+(?:\s+[a-z]+){0,2}?"
 _UNMOVED = r"(?:put|there|(?:right\s+)?where\s+(?:it\s+is|they\s+are)|as\s+(?:it\s+is|they\s+are|is)|alone)"
+# "the keys stay on the coffee table", "the pot remains on the stove": where it is now, kept (h236); a placing
+# said so ("put the keys on the table") is a task, and "leave it on the table" stays one
+_WHERE_IT_STAYS = r"(?:on|in|inside|at)\s+(?:the|its|their)\s+[a-z]+(?:\s+[a-z]+)?"
 _KEPT_AS_IT_IS = re.compile(
-    rf"(?:^|(?<=[.;!?])\s+|(?<=,)\s+)(?:(?P<x>{_NP})\s+(?:(?:can|should|must|will)\s+)?(?:stays?|remains?)"
-    rf"(?:\s+{_UNMOVED})?|(?:just\s+)?leave\s+(?P<y>{_NP})\s+{_UNMOVED})(?=\s*(?:[.;!?,]|$))",
+    rf"(?:^|(?<=[.;!?])\s+|(?<=,)\s+|(?<=\band\s)|(?<=\bbut\s))"
+    rf"(?:(?:(?:make|be)\s+sure\s+(?:that\s+)?)?(?P<x>{_NP})\s+(?:(?:can|should|must|will)\s+)?(?:stays?|remains?)"
+    rf"(?:\s+{_UNMOVED}|\s+{_WHERE_IT_STAYS})?|(?:just\s+)?(?:leave|keep)\s+(?P<y>{_NP})\s+{_UNMOVED})"
+    rf"(?=\s*(?:[.;!?,]|$))",
     re.I,
 )
 
@@ -511,6 +527,8 @@ def unmoved_said(text: str) -> str:
         named = find_mentions(thing.lower())
         if len(named) != 1 or thing.lower()[named[0].char_end :].strip():
             return m[0]
+        if m[0].endswith("alone") and not m[0][:1].isspace() and m.start():
+            return m[0]  # "... and leave X alone": untouched, more than unmoved (users_h195held's truth)
         lead = m[0][: len(m[0]) - len(m[0].lstrip())]
         return f"{lead}don't move {thing[0].lower()}{thing[1:]}"
 

@@ -102,6 +102,7 @@ def unordered_steps(
         and "order" in categories(w)
         and not _not_a_step(plain, i, in_mention)
         and not _inside_one_task(plain, i, parse)
+        and not _treated_first(plain, i, parse)
     ]
     words += [p for p in ("in that order", "in this order") if f" {p} " in f" {text} "]
     words += [p for p in ("at the end", "in the end") if re.search(rf"\b{p}\b(?! of\b)", text)]
@@ -150,6 +151,22 @@ def _inside_one_task(words: list[str], i: int, parse: ParseUsage) -> bool:
             if words[at : at + len(own)] == own and 0 < k < len(own) - 1 and again & set(own[k + 1 :]):
                 return True
     return False
+
+
+def _treated_first(words: list[str], i: int, parse: ParseUsage) -> bool:
+    """Is the order word a treatment's own, "wash it first" / "heat it up before (that)" / "only after rinsing
+    it", where a task treats its thing so: before that task's placing, which the task's kind says (h236)?"""
+    kinds = {f"verb_{t.kind}" for t in parse.tasks}
+    if words[i] == "after" and i >= 1 and words[i - 1] == "only" and i + 2 < len(words):
+        return bool(categories(words[i + 1]) & kinds) and words[i + 2] in _PRONOUNS
+    at = i - 1 - (i >= 3 and words[i - 1] in ("up", "off", "down"))
+    return (
+        words[i] in ("first", "before", "beforehand")
+        and at >= 1
+        and words[at] in _PRONOUNS
+        and bool(categories(words[at - 1]) & kinds)
+        and (i + 1 == len(words) or words[i + 1] in ("that", ".", ",", "!", ";"))
+    )
 
 
 def _container_words(task: BaseTaskSpec) -> set[str]:

@@ -2,8 +2,8 @@
 a slice or treatment said after the placing ("put the tomato in the fridge, then slice it"), closing
 after a placing ("... and close it"), returning a thing to where it was ("bring it back"), repeating a
 task ("three times"), leaving things out ("leave one out"), telling two things of one type apart ("the
-other apple"), switching a machine on ("start it"), an object's task said to come first or last; and
-what no spec says at all (`vague_words`): questions, vague amounts and places, times, waiting on a state.
+other apple"), switching a machine on ("start it"), an object's task said to come first or last. What no
+spec says at all (questions, vague amounts and places, times, waiting on a state) is `vague_words`.
 
 >>> from nl2hltl2plan.language.parse_usage import ParseUsage
 >>> from nl2hltl2plan.language.task_specs import BaseTaskSpec
@@ -50,6 +50,35 @@ _TIMES = re.compile(
 )
 
 
+# "then take the pen out", "get the spoon back out of the mug": a removal from a container, which no base
+# task does; "take the butter knife out of the sink, put it in ..." says where it comes from
+_TAKEN_OUT = re.compile(
+    r"\b(?:take|takes|took|taking|get|gets|getting|pull|pulls|pulling|lift|lifts|fish|grab)"
+    r"(?P<thing>(?:\s+[a-z']+){0,4}?)\s+(?:back\s+)?out\b(?!side)"
+    r"(?:\s+of(?:\s+[a-z']+){1,3}?(?=\s*(?:[,.;!?]|$|and\b|then\b)))?"
+)
+_PLACED_NEXT = re.compile(  # "... out of the drawer and place them on the table"
+    r"[^.;!?]*?(?:\band|\bthen|,)\s+(?:\w+\s+){0,2}?(?:put|place|set|drop|move|carry|bring|toss|throw)\s+(?:it|them)\b"
+)
+_REMOVAL = "a removal from a container, which no base task does: say where it goes instead (put it in/on ...)"
+
+
+def taken_out(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
+    """ "Take the pen out (of the mug)": where a task acts on the pen and the pen is first named here, the
+    words say where it comes from; a thing named before ("put the pen in the box, then take the pen out",
+    "take it out") or that no task acts on is taken out and left so, which no task of the world does."""
+    out, lowered = [], instruction.lower()
+    used = {o for t in parse.tasks for o in (*t.object, *(t.container or ()))}
+    for m in _TAKEN_OUT.finditer(lowered):
+        start, end = m.span("thing") if m["thing"] else (m.end(), m.end() + 12)  # "take out the apple"
+        named = [x for x in mentions if start <= x.char_start < end]
+        types = {t for x in named[:1] for t in x.entry.types}
+        said_before = any(set(x.entry.types) & types for x in mentions if x.char_start < m.start())
+        if not (types & used and (not said_before or _PLACED_NEXT.match(lowered, m.end()))):
+            out.append(Unread(m.group(0).strip(), "action", _REMOVAL))
+    return out
+
+
 def returns_and_repeats(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
     """ "Back" with no place after it names one only where the sentence said where the thing came from
     and a task puts it there ("wash the cloth from the cabinet, put it back"); "move the plate from the
@@ -61,6 +90,7 @@ def returns_and_repeats(instruction: str, mentions: list[Mention], parse: ParseU
         if not _returned(lowered, sentence_start(instruction, m.start()), m.start(), mentions, parse)
     ]
     out += [Unread(m.group(0), "negation", NO_CONSTRAINT) for m in _LEFT_OUT.finditer(lowered)]
+    out += taken_out(instruction, mentions, parse)
     return out + [
         Unread(m.group(0), "count", "no base task is done more than once: say each time as its own task")
         for m in _TIMES.finditer(lowered)
@@ -281,136 +311,6 @@ _TWO_OF_A_TYPE = (
     "two tasks take this type: the spec cannot require two different ones, or the same one (any one of"
     " the type does)"
 )
-
-
-# "some apples", "half of the mugs", "every other mug", "the rest": how many is not said
-_VAGUE_AMOUNT = re.compile(
-    r"\b(?:some|most|half|every other|a (?:bunch|number|handful|lot) of|lots of|plenty of)\b(?: of)?"
-)
-# "half the lettuce", "a quarter of an apple": a part of one thing, which no base task moves (a slice is a
-# task's own word: "a slice of lettuce")
-_PART = re.compile(
-    r"\b(?:(?:a|one)\s+half\s+of|half(?:\s+of)?|(?:a|one)\s+(?:quarter|third)\s+of|(?:a\s+)?(?:part|portion)\s+of)"
-    r"\s+(?:the\s+|an?\s+|your\s+|my\s+)?"
-)
-_PART_OF_ONE = "a part of one thing: no base task moves a part; say 'a slice of' or the whole thing"
-# not "the roll ones before the others": the other tasks (h190)
-_THE_REST = re.compile(r"(?<!\bbefore )(?<!\bafter )\bthe (?:rest|remaining(?: ones)?|others)\b")
-# "A. When the rest is done, B" names the tasks said before (`grammar.references.said_before`), not an amount
-_REST_DONE = re.compile(r" (?:is|are|has been|have been|gets|get) (?:done|finished|complete)")
-_VAGUE_PIECES = re.compile(  # "a few slices": pieces are no mention, so the count check never sees them
-    r"\b(?:some|most|half|a few|few|several|many|multiple|a couple of)(?: of)?(?: the)? "
-    r"(?:slices|pieces|bits|chunks)\b"
-)
-# "put it away", "anywhere but the sofa", "somewhere": where is not said
-_VAGUE_PLACE = re.compile(
-    r"\b(?:(?:put|tidy|store|stow|pack|clear)\s+(?:\w+\s+){0,3}?away|anywhere|somewhere|elsewhere|everywhere|"
-    r"wherever)\b"
-)
-_PLACE_AFTER = re.compile(r"[^,.;!?]*?\b(?:in|into|on|onto|inside|under|to)\b")
-_NUMBER = r"(?:\d+|a|an|one|two|three|four|five|six|ten|fifteen|twenty|thirty|a few|a couple of)"
-# "in a second box": the ordinal before a thing ("another box"), no time (h190); "in a second, put ..." stays
-_ORDINAL_SECOND = r"(?<!\ba second)|(?<=\ba second)(?!\s+(?!(?:and|or|then|to|so|please)\b)[a-z])"
-_TIME = re.compile(
-    rf"\b(?:(?:for|in|within|after)\s+{_NUMBER}\s+(?:seconds?|minutes?|mins?|hours?)(?:{_ORDINAL_SECOND})"
-    r"|for a (?:while|bit|moment)|(?:at|for|by|until)\s+\d{1,2}(?::\d\d)?(?:\s*(?:am|pm|o'clock))?"
-    r"|(?:before|after|around)\s+\d{1,2}(?::\d\d(?:\s*[ap]m)?|\s*(?:am|pm|o'clock))"
-    r"|(?:in\s+the|this|every|each|tomorrow|at)\s+(?:morning|afternoon|evening|night))\b"
-)
-# "when the microwave is free", "once the drawer is empty": a state no task brings about
-_STATE_CONDITION = re.compile(
-    r"\b(?:when|whenever|once|while|as soon as|until)\s+(?:the|a|an|my|your|it|they)\b[^,.;!?]{0,30}?\b"
-    r"(?:is|are|gets|becomes)\s+(?:not\s+)?(?:free|empty|full|open|opened|closed|shut|ready|available|dirty|busy|"
-    r"occupied|wet|dry|off|on)\b(?!\s+(?:the|a|an|top)\b)"
-)
-# "when the movie ends", "before the guests arrive": an event of something that is no thing of the world (a
-# named thing's event, "after the apple finishes cooling", is left to the readers)
-_EVENT = re.compile(
-    r"\b(?:when|whenever|once|after|before|until|till|as soon as)\s+"
-    r"(?:the|a|an|my|your|our|his|her|their)?\s*"
-    r"(?P<who>[a-z]+(?:\s+[a-z]+)?)\s+(?:ends?|starts?|begins?|finish(?:es)?|arrives?|leaves?|comes?|returns?"
-    r"|wakes?(?:\s+up)?|rings?|stops?|is\s+over|gets?\s+(?:home|back|here|up))\b"
-)
-# who may end or finish a step of the task itself ("after you finish", "when both are done")
-_DOERS = frozenset("you we i it they that this these those both each all everything robot robots".split())
-# "Optional: put X on Y", "optionally", "time permitting": a step the spec would have to leave to the robot's
-# choice, which no hierarchical spec says (every task of it is required), so the words are refused; "the
-# order is optional" is a freedom of the order (the free-order phrases), not of a step
-# "in the fridge, or the sink, whichever": a choice left to the robot ("whichever order": a free order)
-_CHOICE = re.compile(
-    r"\bwhichever\b(?=\s*(?:[,.;!?]|$|(?:is|one|works|suits)\b|you\s+(?:like|prefer|want)\s*(?:[,.;!?]|$)))"
-)
-_OPTIONAL = re.compile(r"\b(?:optional(?:ly)?|time permitting|if you feel like it)\b")
-_ORDER_TOPIC = re.compile(r"\b(?:order|ordering|sequence)\b")
-# "same as yesterday", "like last time", "the usual", "as always": an instruction given before, which the
-# system never saw, so what it asks is unknown and refused; "as before" / "like before" may point at an
-# earlier step of this same instruction (ALFRED's annotators write it so) and are not listed
-_PAST = r"(?:yesterday|last\s+(?:time|week|night)|the\s+other\s+day|usual|always)"
-_UNSEEN_INSTRUCTION = re.compile(
-    rf"\b(?:(?:the\s+)?same\s+as\s+{_PAST}|(?:just\s+)?like\s+{_PAST}|as\s+(?:usual|always|last\s+time|yesterday)"
-    r"|the\s+usual|(?:do|repeat)\s+(?:that|the\s+same)\s+again|what\s+you\s+did\s+(?:yesterday|last\s+time))\b"
-)
-# "is the apple in the fridge", "what is in the fridge", "which plate should it go on?"; not "what I need
-# is ...", a need said as a pseudo-cleft
-_QUESTION = re.compile(
-    r"^\s*(?:(?:is|are|was|were|does|did|how many|how much)\b|(?:where|what|which|who|whose|why)\s+"
-    r"(?:(?:is|are|was|were|do|does|did|can|could|should|would|will|has|have)\b|.*\?\s*$))"
-)
-
-
-def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
-    """What no base task can take: a question ("is the apple in the fridge?"), a vague amount of a plural
-    ("some apples", "the rest"), a vague place ("put it away", "anywhere but the sofa"), a duration or a
-    clock time ("for two minutes", "set it for 7"), waiting on a state ("when the microwave is
-    free"), a step made optional ("Optional: put ...") and an instruction given before ("same as
-    yesterday", "the usual")."""
-    lowered = instruction.lower()
-    out = [
-        Unread(q.strip(), "action", "a question, not a request: say what to do")
-        for q in re.findall(r"[^.;!?]*[.;!?]?", lowered)
-        if q.strip() and _QUESTION.match(q)
-    ]
-    for m in _VAGUE_AMOUNT.finditer(lowered):
-        named = next((x for x in mentions if m.end() <= x.char_start <= m.end() + 12), None)
-        if named is not None and (named.plural or m.group(0) == "every other"):
-            out.append(Unread(lowered[m.start() : named.char_end], "count", "a vague count: say how many"))
-    out += [
-        Unread(lowered[m.start() : named.char_end], "count", _PART_OF_ONE)
-        for m in _PART.finditer(lowered)
-        for named in [next((x for x in mentions if x.char_start == m.end()), None)]
-        if named is not None and not named.plural
-    ]
-    out += [
-        Unread(m.group(0), "count", "a vague count: say how many")
-        for m in (*_THE_REST.finditer(lowered), *_VAGUE_PIECES.finditer(lowered))
-        if not (_REST_DONE.match(lowered, m.end()) and re.search(r"[,.;!?]", lowered[: m.start()]))
-    ]
-    out += [
-        Unread(m.group(0), "place", "a vague place: name it")
-        for m in _VAGUE_PLACE.finditer(lowered)
-        if not (m.group(0).endswith("away") and _PLACE_AFTER.match(lowered, m.end()))  # "away in a cabinet"
-    ]
-    out += [Unread(m.group(0), "count", "no base task takes a time") for m in _TIME.finditer(lowered)]
-    out += [Unread(m[0], "place", "a choice left open: say which one") for m in _CHOICE.finditer(lowered)]
-    out += [
-        Unread(m.group(0), "condition", "an optional step: the spec requires every task; say it or drop it")
-        for m in _OPTIONAL.finditer(lowered)
-        if not _ORDER_TOPIC.search(lowered[sentence_start(lowered, m.start()) : m.start()])
-    ]
-    out += [
-        Unread(m.group(0), "action", "it points at an instruction this one does not contain: say the tasks")
-        for m in _UNSEEN_INSTRUCTION.finditer(lowered)
-    ]
-    out += [
-        Unread(m[0], "condition", "no base task waits for an event: say what to do")
-        for m in _EVENT.finditer(lowered)
-        if m["who"].split()[0] not in _DOERS
-        and not any(m.start("who") <= x.char_start < m.end("who") for x in mentions)
-    ]
-    return out + [
-        Unread(m.group(0), "condition", "no base task waits on a state: say what to do")
-        for m in _STATE_CONDITION.finditer(lowered)
-    ]
 
 
 _START = re.compile(r"\b(?:start|run|operate|activate)\s+(?:it|them|the\s+\w+)\b(?![^,.;!?]*\bunder\b)")

@@ -28,7 +28,7 @@ from nl2hltl2plan.language.grammar.lamp_phrases import carried_then_lit
 from nl2hltl2plan.language.grammar.listed_things import merge_items, ordinal_of_a_list, split_last_own_place
 from nl2hltl2plan.language.grammar.phrases import NP, one_of_each_under_a_shared_plural, tokens
 from nl2hltl2plan.language.grammar.sentences import Sentence
-from nl2hltl2plan.language.grammar.subordinate import treatment_after
+from nl2hltl2plan.language.grammar.subordinate import ends_treating_it, treatment_after
 from nl2hltl2plan.language.statements import WHERE_COPULA
 
 
@@ -320,6 +320,8 @@ class DraftBuilder:
                 u.markers.append((kind, ref))
         one = len(sentence_units) == 1 and not _CLOSING_TIME.search(st.sentence.text.rstrip(" .!?;"))
         for kind, ref in st.sentence.trailing:
+            if kind == G.FIRST and ends_treating_it(st.sentence.body):
+                continue  # "..., but wash it first": before the placing of "it", which its task's kind says
             if kind in {G.THEN, G.FINALLY} and len(sentence_units) > 1:
                 # "A and B afterwards": B after the clause before it, as "A, then B"
                 sentence_units[-1].seq_after_prev |= kind == G.THEN

@@ -53,6 +53,15 @@ def treatment_of_it(text: str) -> bool:
     return bool(clauses) and treats_it(parse_frame(clauses[0][0]))
 
 
+def ends_treating_it(body: str) -> bool:
+    """Does a sentence of several clauses close with a treatment of "it" ("put the apple in the fridge, and
+    the mug too, but wash it first")? Its closing "first" says the treatment comes before that task's own
+    placing (the task's kind), not that the task comes before the others (h225's leftover)."""
+    clauses = split_clauses(body)
+    tail = re.split(r",\s*", clauses[-1][0])[-1] if clauses else ""  # "put the mug in it, wash it"
+    return len(clauses) > 1 and treats_it(parse_frame(tail))
+
+
 def _as_gerund(verb: str, rest: str) -> str | None:
     """ "rinsed" + " it off" -> "rinsing": the gerund of a treatment verb (any form) when the words from it
     on open a treatment of "it"; else None."""
@@ -76,16 +85,31 @@ _DONE_FIRST = re.compile(
 )
 
 
+# "Y, but wash it first", "Y but heat it up before (that)", "Y, but only after rinsing it": the treatment
+# added after the placing is done before it (h225's leftover, h236)
+_BUT_FIRST = re.compile(
+    r"(?<=\w)(?:\s*,)?\s+but\s+(?:(?P<verb>[a-z]+)(?P<rest>\s+(?:it|them)(?:\s+(?:up|off|down))?)\s+"
+    r"(?:first|beforehand|before(?:\s+that)?)(?=\s*(?:[.;!?]|$))|only\s+after\s+(?P<ing>[a-z]+ing)(?=\s+(?:it|them)\b))",
+    re.IGNORECASE,
+)
+
+
 def treated_before(text: str) -> str:
-    """ "Y when done heating it in the microwave" / "Y once you've rinsed it" -> "Y after heating it in
-    the microwave" / "Y after rinsing it", where the words are such a treatment (see above)."""
+    """ "Y when done heating it in the microwave" / "Y once you've rinsed it" / "Y, but rinse it first" -> "Y
+    after heating it in the microwave" / "Y after rinsing it", where the words are such a treatment (see
+    above)."""
 
     def sub(m: re.Match[str]) -> str:
         rest = re.split(r"[.;!?]", text[m.end() :], maxsplit=1)[0]
         gerund = _as_gerund(m["verb"], rest)
         return f" after {gerund}" if gerund else m[0]
 
-    return _DONE_FIRST.sub(sub, text)
+    def but_first(m: re.Match[str]) -> str:
+        rest = m["rest"] or re.split(r"[.;!?]", text[m.end() :], maxsplit=1)[0]
+        gerund = _as_gerund(m["verb"] or m["ing"], rest)
+        return f" after {gerund}{m['rest'] or ''}" if gerund else m[0]
+
+    return _BUT_FIRST.sub(but_first, _DONE_FIRST.sub(sub, text))
 
 
 # "before (you) <put/throw>ing it / them": the thing of the clause before, put down next
