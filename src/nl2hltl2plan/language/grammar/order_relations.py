@@ -66,7 +66,7 @@ def relate(
         _then_also(k, tasks, text, b)
         _marker_edges(k, tasks, (free, loose), b, text, edges)
         _step_edges(k, tasks, steps, free, edges, text)
-    _first_edges(tasks.units, steps, free, edges)
+    _first_edges(tasks.units, steps, loose, edges)  # not before a task whose order is left open
     _leading_last(tasks.units, steps, free, edges)
     if why := first_said_unread(tasks.units, text):  # "First A, first B": which one is first?
         b.unparsed.append(f"{why} ({ORDER_LEFT_OPEN})")
@@ -507,6 +507,11 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
         own = [steps[j] for j, v in enumerate(units) if v.sentence == u.sentence]  # its sentence's steps
         if steps[k] != own[0] or not any(kind == G.FIRST for kind, _ in u.markers):
             continue
+        # a sentence's "first" is on each of its clauses: read once, at the step's first ("First A, and B,
+        # and also C": A before B and C, not B before C)
+        if any(steps[j] == steps[k] and units[j].sentence == u.sentence and (G.FIRST, "") in units[j].markers
+               for j in range(k)) and (G.FIRST, "") in u.markers:
+            continue
         nxt = units[k + 1] if k + 1 < len(units) else None
         if nxt is not None and (
             nxt.seq_after_prev or any(kind in {G.THEN, G.AFTER_ALL, G.AFTER_REF} for kind, _ in nxt.markers)
@@ -521,10 +526,11 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
         same = [j for j, s in enumerate(steps) if s == steps[k]][1:]  # the step's units after its first
         listed = any(units[j].joiner in _ADDING for j in same) and any(s > steps[k] for s in steps)
         step = steps[k] if own[-1] != own[0] or listed else -1
+        firsts = [t for j in range(k, len(units)) if steps[j] == step for t in units[j].tasks] or u.tasks
         later = [t for j in range(k + 1, len(units)) if steps[j] != step for t in units[j].tasks]
         stated = nx.transitive_closure(nx.DiGraph(list(edges))) if stated is None else stated
-        later = [t for t in later if t not in free and not any(stated.has_edge(t, a) for a in u.tasks)]
-        edges.update((a, b2) for a in u.tasks for b2 in later)
+        later = [t for t in later if t not in free and not any(stated.has_edge(t, a) for a in firsts)]
+        edges.update((a, b2) for a in firsts for b2 in later)
 
 
 def _leading_last(units: list[Unit], steps: list[int], free: set[int], edges: Edges) -> None:

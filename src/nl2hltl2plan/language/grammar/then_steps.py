@@ -12,7 +12,7 @@ from nl2hltl2plan.language.grammar.frames import IN_SENTENCE
 from nl2hltl2plan.language.grammar.sentences import split_sentences
 
 # "in any order" / "order doesn't matter" said of a sentence: its clauses are one group
-ANY_ORDER = re.compile(r"\b(?:any|either|whatever|no\s+particular)\s+order\b", re.I)
+ANY_ORDER = re.compile(r"\b(?:any|either|whatever|whichever|no\s+particular)\s+order\b", re.I)
 _ORDER_FREE = re.compile(r"\border\s+(?:doesn'?t|does\s+not|isn'?t|is\s+not)\s+(?:matter|important)\b", re.I)
 
 
