@@ -61,7 +61,6 @@ def relate(
     # (ANNOTATION_GUIDE.md), as with "A and B in any order. Finally C."
     loose = free | _any_order_steps(tasks, steps)
     for k in range(len(tasks.units)):
-        _added_after_before_sentence(k, tasks.units, tasks, text, b)
         _added_to_free(k, tasks, text, b)
         _then_also(k, tasks, text, b)
         _marker_edges(k, tasks, (free, loose), b, text, edges)
@@ -312,24 +311,6 @@ def _additive_between(said: str, own: str, text: str) -> str | None:
     if end < 0 or (m := _ADDITIVE.match(text[at + len(said) : end])) is None:
         return None
     return m["word"].lower()
-
-
-def _added_after_before_sentence(k: int, units: list[Unit], tasks: Tasks, text: str, b: TaskBuilder) -> None:
-    """ "X. Ahead of that, Y. On top of that, Z.": the sentence that adds Z opens with an additive word
-    right after a "before that" sentence; as inside one sentence (`_added_to_before`), whether Z is before
-    X too is not said, so it is refused by name."""
-    u = units[k]
-    if k == 0 or units[k - 1].sentence == u.sentence or not u.tasks:
-        return
-    if not any(kind == G.BEFORE_PREV for kind, _ in units[k - 1].markers) or u.markers:
-        return
-    sentences = split_sentences(text)
-    if u.sentence >= len(sentences) or (m := _ADDITIVE.match(sentences[u.sentence][0])) is None:
-        return
-    own = tasks.specs[u.tasks[0]].text
-    word = m["word"].lower()
-    why = f"after a 'before that' sentence: before that too? {ORDER_LEFT_OPEN}"
-    b.unparsed.append(f"{own!r} ({word!r} {why})")
 
 
 # "A and then also B": "then" may order B after A or only add it ("and then also, there is B")
