@@ -15,9 +15,11 @@ BREAD = "place Bread -> CounterTop"
 
 
 def test_a_leading_first_with_adding_joiners_comes_before_each_later_task():
-    """Before: "First A, and B, and also C" read A, B, C as a chain (the sentence's "first" on each clause)."""
+    """Before: "First A, and B, and also C" read A, B, C as a chain (the sentence's "first" on each
+    clause)."""
     tasks, order, unread = read(
-        "First put the apple in the fridge, and put the mug in the sink, and also put the egg in the microwave."
+        "First put the apple in the fridge, and put the mug in the sink, and also put the egg in the "
+        "microwave."
     )
     assert len(tasks) == 3 and not unread
     assert order == {(APPLE, MUG), (APPLE, EGG)}

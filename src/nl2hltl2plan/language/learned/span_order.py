@@ -114,7 +114,8 @@ def leading_first(opening: str, relations: list[str], pairs: list[tuple[int, int
         succ.setdefault(x, set()).add(y)
     # a group with an ANY span is open as a whole ("C and D in any order"), as for "finally"
     open_ = {i for g in groups if any(relations[j] == "ANY" for j in g) for i in g}
-    later = [i for i in range(1, len(relations)) if i not in firsts and i not in open_ and relations[i] != "FREE"]
+    skip = set(firsts) | open_
+    later = [i for i in range(1, len(relations)) if i not in skip and relations[i] != "FREE"]
     out = pairs + [(x, y) for x in firsts for y in later if not _reaches(succ, y, x)]
     return sorted(drop_cycles(out))
 
