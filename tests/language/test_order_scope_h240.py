@@ -39,14 +39,22 @@ def test_first_then_any_order_list_is_unordered():
     assert len(tasks) == 3 and not unread and order == set()
 
 
+def _first(text: str, relations: list[str], pairs: list[tuple[int, int]]) -> list[tuple[int, int]]:
+    """`leading_first` on a text whose spans are its single capital letters."""
+    spans = [(i, i + 1) for i, c in enumerate(text) if c in "XYZW"]
+    return leading_first(text, spans, relations, pairs)
+
+
 def test_the_generator_orders_a_leading_first_as_the_grammar_does():
-    assert leading_first("First ", ["START", "PAR", "PAR"], []) == [(0, 1), (0, 2)]
-    assert leading_first("First, ", ["START", "BARE", "FREE"], []) == [(0, 1)]
-    # "First X, then Y": only what "then" states; no "first" at all: nothing added
-    assert leading_first("First ", ["START", "SEQ", "BARE"], [(0, 1)]) == [(0, 1)]
-    assert leading_first("Please ", ["START", "BARE"], []) == []
-    # "First X. Before that, Y": Y stays first
-    assert leading_first("First ", ["START", "PRE"], [(1, 0)]) == [(1, 0)]
+    assert _first("First X, and Y, and also Z", ["START", "PAR", "PAR"], []) == [(0, 1), (0, 2)]
+    assert _first("First, X. Y. At any time, Z", ["START", "BARE", "FREE"], []) == [(0, 1)]
+    # "First X, then Y" / "First X. Once X is done, Y": only what the order word states
+    assert _first("First X, then Y. Z", ["START", "SEQ", "BARE"], [(0, 1)]) == [(0, 1)]
+    assert _first("First X. Once X is done, Y. Z", ["START", "REF", "BARE"], [(0, 1)]) == [(0, 1)]
+    assert _first("Please X. Y", ["START", "BARE"], []) == []
+    # "First X. Before that, Y": Y stays first; "Oh and Z": an afterthought takes no order from "first"
+    assert _first("First X. Before that, Y", ["START", "PRE"], [(1, 0)]) == [(1, 0)]
+    assert _first("First X. Y. Oh and Z", ["START", "BARE", "BARE"], []) == [(0, 1)]
 
 
 def test_before_that_covers_the_clause_coordinated_with_its_own():

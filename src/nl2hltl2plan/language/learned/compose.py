@@ -493,7 +493,7 @@ def synthesise(
         lowered = _finish(text, rng)
         ids = [task_letter(i) for i in range(len(chosen))]
         tasks = [t.model_copy(update={"id": i, "text": ""}) for t, i in zip(said, ids, strict=True)]
-        pairs = leading_first(text[: spans[0][0]], rels, before_pairs(rels, targets))
+        pairs = leading_first(text, spans, rels, before_pairs(rels, targets))
         before = [(ids[a], ids[b]) for a, b in pairs]
         drawn += 1
         if said_only and not composable(chosen):

@@ -347,7 +347,7 @@ def structure_reading(
         previous = (text, p.tasks[-1])
         parsed.append((p.tasks, p.before))
         ambiguities.append(p.ambiguities)
-    tasks, before, groups = combine_spans(reading, parsed, said[: reading.spans[0].start])
+    tasks, before, groups = combine_spans(reading, parsed, said)
     if not complete_and_accounted(instruction, tasks, before):
         return None
     renamed = _renamed_ambiguities(ambiguities, parsed, tasks)

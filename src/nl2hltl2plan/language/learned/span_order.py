@@ -41,7 +41,10 @@ nothing comes before yet) to earlier ones; a pair that would still close a cycle
 
 from __future__ import annotations
 
+import re
+
 POINTING = ("REF", "RPRE", "ALL")  # relations to a named earlier span, or to all of them
+_AFTERTHOUGHT = re.compile(r"\boh\b", re.I)  # "Oh and Z": a request of its own (`courtesy.without_courtesy`)
 
 
 def before_pairs(relations: list[str], targets: list[int | None] | None = None) -> list[tuple[int, int]]:
@@ -82,25 +85,27 @@ def before_pairs(relations: list[str], targets: list[int | None] | None = None) 
     return sorted(drop_cycles(pairs))
 
 
-def leading_first(opening: str, relations: list[str], pairs: list[tuple[int, int]]) -> list[tuple[int, int]]:
+def leading_first(
+    text: str, spans: list[tuple[int, int]], relations: list[str], pairs: list[tuple[int, int]]
+) -> list[tuple[int, int]]:
     """`pairs` with what a leading "First X" states where no sequencing word follows it ("First X. Also Y",
     "First X, and Y, and also Z"): X before every later span not allowed at any time or in any order and not
     stated before X, as "Finally Y" is after every such span (ANNOTATION_GUIDE.md); the opening step as a
-    whole where more follows it ("First X and Y. Also Z": X and Y before Z). "First X, then Y" states only
-    what its "then" does. `opening`: the text before the first span (the grammar's own "first" openers).
+    whole where more follows it ("First X and Y. Also Z": X and Y before Z). "First X, then Y" (or "First X.
+    Once X is done, Y") states only what its order word does; an afterthought ("Oh and Z") takes no order from
+    it (`courtesy`). `spans`: the spans' character ranges in `text` (the grammar's own "first" openers before
+    the first).
 
-    >>> leading_first("First ", ["START", "PAR", "BARE"], [])
+    >>> leading_first("First A, B. Also C", [(6, 7), (9, 10), (17, 18)], ["START", "PAR", "BARE"], [])
     [(0, 2), (1, 2)]
-    >>> leading_first("First, ", ["START", "BARE", "FREE"], [])
-    [(0, 1)]
-    >>> leading_first("First ", ["START", "SEQ", "BARE"], [(0, 1)])
+    >>> leading_first("First, A. B", [(7, 8), (10, 11)], ["START", "BARE"], [])
     [(0, 1)]
     """
     from nl2hltl2plan.language.grammar.word_tables import FIRST, LEADING
 
-    if len(relations) < 2 or relations[0] != "START" or relations[1] in ("SEQ", "ANY"):
+    if len(relations) < 2 or relations[0] != "START" or relations[1] in ("SEQ", "ANY", "REF", "ALL"):
         return pairs
-    if not any(kind == FIRST and rx.match(opening.strip() + " ") for rx, kind in LEADING):
+    if not any(kind == FIRST and rx.match(text[: spans[0][0]].strip() + " ") for rx, kind in LEADING):
         return pairs
     groups: list[list[int]] = []  # a span and the PAR / ANY spans joined to it
     for i, rel in enumerate(relations):
@@ -114,6 +119,7 @@ def leading_first(opening: str, relations: list[str], pairs: list[tuple[int, int
         succ.setdefault(x, set()).add(y)
     # a group with an ANY span is open as a whole ("C and D in any order"), as for "finally"
     open_ = {i for g in groups if any(relations[j] == "ANY" for j in g) for i in g}
+    open_ |= {i for i in range(1, len(spans)) if _AFTERTHOUGHT.search(text[spans[i - 1][1] : spans[i][0]])}
     skip = set(firsts) | open_
     later = [i for i in range(1, len(relations)) if i not in skip and relations[i] != "FREE"]
     out = pairs + [(x, y) for x in firsts for y in later if not _reaches(succ, y, x)]

@@ -276,10 +276,10 @@ SpanTasks = tuple[list[BaseTaskSpec], list[tuple[str, str]]]
 
 
 def combine_spans(
-    reading: Reading, parsed: list[SpanTasks], opening: str = ""
+    reading: Reading, parsed: list[SpanTasks], said: str = ""
 ) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]]]:
     """Renumber each span's tasks in text order; every task of a span before every task of a later step.
-    `opening`: the text before the first span (a leading "First", `span_order.leading_first`)."""
+    `said`: the text the spans were read in (a leading "First", `span_order.leading_first`)."""
     tasks: list[BaseTaskSpec] = []
     before: list[tuple[str, str]] = []
     groups: list[list[str]] = []
@@ -292,7 +292,9 @@ def combine_spans(
         if len(new) > 1:
             groups.append(list(new.values()))
     relations = [s.relation for s in reading.spans]
-    for a, b in leading_first(opening, relations, before_pairs(relations, [s.target for s in reading.spans])):
+    spans = [(s.start, s.end) for s in reading.spans]
+    pairs = before_pairs(relations, [s.target for s in reading.spans])
+    for a, b in leading_first(said, spans, relations, pairs):
         before += [(x, y) for x in ids_of_span[a] for y in ids_of_span[b]]
     return tasks, sorted(set(before)), groups
 
