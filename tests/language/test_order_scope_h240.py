@@ -55,6 +55,8 @@ def test_the_generator_orders_a_leading_first_as_the_grammar_does():
     # "First X. Before that, Y": Y stays first; "Oh and Z": an afterthought takes no order from "first"
     assert _first("First X. Before that, Y", ["START", "PRE"], [(1, 0)]) == [(1, 0)]
     assert _first("First X. Y. Oh and Z", ["START", "BARE", "BARE"], []) == [(0, 1)]
+    # a closing remark that frees the order (paper_h188dev)
+    assert _first("First, X, Y, and Z. Do these in any order.", ["START", "PAR", "PAR"], []) == []
 
 
 def test_before_that_covers_the_clause_coordinated_with_its_own():

@@ -33,6 +33,7 @@ from nl2hltl2plan.language.grammar.then_steps import (
     leaves_order_open,
     own_clause,
     said_for_an_earlier_clause,
+    says_any_order,
     sentence_steps,
 )
 from nl2hltl2plan.language.semantic_check import find_cycle
@@ -65,7 +66,8 @@ def relate(
         _then_also(k, tasks, text, b)
         _marker_edges(k, tasks, (free, loose), b, text, edges)
         _step_edges(k, tasks, steps, free, edges, text)
-    _first_edges(tasks.units, steps, loose, edges)  # not before a task whose order is left open
+    if not _freed_by_a_remark(tasks.units, text):  # "First, A, B and C. Do these in any order."
+        _first_edges(tasks.units, steps, loose, edges)  # not before a task whose order is left open
     _leading_last(tasks.units, steps, free, edges)
     if why := first_said_unread(tasks.units, text):  # "First A, first B": which one is first?
         b.unparsed.append(f"{why} ({ORDER_LEFT_OPEN})")
@@ -476,6 +478,13 @@ def _add_ref_tasks(new: list[BaseTaskSpec], after: bool, u: Unit, tasks: Tasks, 
 
 
 _ADDING = frozenset({"and", "also", "plus"})  # joiners that add a clause to a step, no order of their own
+
+
+def _freed_by_a_remark(units: list[Unit], text: str) -> bool:
+    """Does a sentence that states no task say "in any order" ("Do these in any order")? It frees the
+    order of the tasks said before it, a leading "first" too (paper_h188dev)."""
+    said = {u.sentence for u in units if u.tasks}
+    return any(k not in said and says_any_order(s[0]) for k, s in enumerate(split_sentences(text)))
 
 
 def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edges) -> None:

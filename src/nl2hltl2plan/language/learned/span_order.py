@@ -101,8 +101,12 @@ def leading_first(
     >>> leading_first("First, A. B", [(7, 8), (10, 11)], ["START", "BARE"], [])
     [(0, 1)]
     """
+    from nl2hltl2plan.language.grammar.then_steps import says_any_order
     from nl2hltl2plan.language.grammar.word_tables import FIRST, LEADING
 
+    # "First, A, B and C. Do these in any order.": the remark no span carries frees the list
+    if len(relations) < 2 or says_any_order(text[spans[-1][1] :]):
+        return pairs
     if len(relations) < 2 or relations[0] != "START" or relations[1] in ("SEQ", "ANY", "REF", "ALL"):
         return pairs
     if not any(kind == FIRST and rx.match(text[: spans[0][0]].strip() + " ") for rx, kind in LEADING):
