@@ -33,6 +33,7 @@ from nl2hltl2plan.language.grammar.then_steps import (
     leaves_order_open,
     own_clause,
     said_for_an_earlier_clause,
+    says_any_order,
     sentence_steps,
 )
 from nl2hltl2plan.language.semantic_check import find_cycle
@@ -61,12 +62,12 @@ def relate(
     # (ANNOTATION_GUIDE.md), as with "A and B in any order. Finally C."
     loose = free | _any_order_steps(tasks, steps)
     for k in range(len(tasks.units)):
-        _added_after_before_sentence(k, tasks.units, tasks, text, b)
         _added_to_free(k, tasks, text, b)
         _then_also(k, tasks, text, b)
         _marker_edges(k, tasks, (free, loose), b, text, edges)
         _step_edges(k, tasks, steps, free, edges, text)
-    _first_edges(tasks.units, steps, free, edges)
+    if not _freed_by_a_remark(tasks.units, text):  # "First, A, B and C. Do these in any order."
+        _first_edges(tasks.units, steps, loose, edges)  # not before a task whose order is left open
     _leading_last(tasks.units, steps, free, edges)
     if why := first_said_unread(tasks.units, text):  # "First A, first B": which one is first?
         b.unparsed.append(f"{why} ({ORDER_LEFT_OPEN})")
@@ -314,24 +315,6 @@ def _additive_between(said: str, own: str, text: str) -> str | None:
     return m["word"].lower()
 
 
-def _added_after_before_sentence(k: int, units: list[Unit], tasks: Tasks, text: str, b: TaskBuilder) -> None:
-    """ "X. Ahead of that, Y. On top of that, Z.": the sentence that adds Z opens with an additive word
-    right after a "before that" sentence; as inside one sentence (`_added_to_before`), whether Z is before
-    X too is not said, so it is refused by name."""
-    u = units[k]
-    if k == 0 or units[k - 1].sentence == u.sentence or not u.tasks:
-        return
-    if not any(kind == G.BEFORE_PREV for kind, _ in units[k - 1].markers) or u.markers:
-        return
-    sentences = split_sentences(text)
-    if u.sentence >= len(sentences) or (m := _ADDITIVE.match(sentences[u.sentence][0])) is None:
-        return
-    own = tasks.specs[u.tasks[0]].text
-    word = m["word"].lower()
-    why = f"after a 'before that' sentence: before that too? {ORDER_LEFT_OPEN}"
-    b.unparsed.append(f"{own!r} ({word!r} {why})")
-
-
 # "A and then also B": "then" may order B after A or only add it ("and then also, there is B")
 _THEN_ALSO = re.compile(r"\bthen\s*,?\s+(?:also|additionally|as\s+well)\b", re.I)
 
@@ -497,6 +480,13 @@ def _add_ref_tasks(new: list[BaseTaskSpec], after: bool, u: Unit, tasks: Tasks, 
 _ADDING = frozenset({"and", "also", "plus"})  # joiners that add a clause to a step, no order of their own
 
 
+def _freed_by_a_remark(units: list[Unit], text: str) -> bool:
+    """Does a sentence that states no task say "in any order" ("Do these in any order")? It frees the
+    order of the tasks said before it, a leading "first" too (paper_h188dev)."""
+    said = {u.sentence for u in units if u.tasks}
+    return any(k not in said and says_any_order(s[0]) for k, s in enumerate(split_sentences(text)))
+
+
 def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edges) -> None:
     """ "First X" with no sequencing word right after: X before every later task not allowed at any time,
     and not stated before X ("First X. Before all that, Y": Y first). In a sentence of several steps it is
@@ -506,6 +496,11 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
     for k, u in enumerate(units):
         own = [steps[j] for j, v in enumerate(units) if v.sentence == u.sentence]  # its sentence's steps
         if steps[k] != own[0] or not any(kind == G.FIRST for kind, _ in u.markers):
+            continue
+        # a sentence's "first" is on each of its clauses: read once, at the step's first ("First A, and B,
+        # and also C": A before B and C, not B before C)
+        if any(steps[j] == steps[k] and units[j].sentence == u.sentence and (G.FIRST, "") in units[j].markers
+               for j in range(k)) and (G.FIRST, "") in u.markers:
             continue
         nxt = units[k + 1] if k + 1 < len(units) else None
         if nxt is not None and (
@@ -521,10 +516,11 @@ def _first_edges(units: list[Unit], steps: list[int], free: set[int], edges: Edg
         same = [j for j, s in enumerate(steps) if s == steps[k]][1:]  # the step's units after its first
         listed = any(units[j].joiner in _ADDING for j in same) and any(s > steps[k] for s in steps)
         step = steps[k] if own[-1] != own[0] or listed else -1
+        firsts = [t for j in range(k, len(units)) if steps[j] == step for t in units[j].tasks] or u.tasks
         later = [t for j in range(k + 1, len(units)) if steps[j] != step for t in units[j].tasks]
         stated = nx.transitive_closure(nx.DiGraph(list(edges))) if stated is None else stated
-        later = [t for t in later if t not in free and not any(stated.has_edge(t, a) for a in u.tasks)]
-        edges.update((a, b2) for a in u.tasks for b2 in later)
+        later = [t for t in later if t not in free and not any(stated.has_edge(t, a) for a in firsts)]
+        edges.update((a, b2) for a in firsts for b2 in later)
 
 
 def _leading_last(units: list[Unit], steps: list[int], free: set[int], edges: Edges) -> None:

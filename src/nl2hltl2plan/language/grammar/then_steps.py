@@ -12,7 +12,7 @@ from nl2hltl2plan.language.grammar.frames import IN_SENTENCE
 from nl2hltl2plan.language.grammar.sentences import split_sentences
 
 # "in any order" / "order doesn't matter" said of a sentence: its clauses are one group
-ANY_ORDER = re.compile(r"\b(?:any|either|whatever|no\s+particular)\s+order\b", re.I)
+ANY_ORDER = re.compile(r"\b(?:any|either|whatever|whichever|no\s+particular)\s+order\b", re.I)
 _ORDER_FREE = re.compile(r"\border\s+(?:doesn'?t|does\s+not|isn'?t|is\s+not)\s+(?:matter|important)\b", re.I)
 
 
@@ -101,4 +101,9 @@ def said_for_an_earlier_clause(marker: tuple[str, str], k: int, tasks: Tasks, te
 def leaves_order_open(u: Unit, text: str) -> bool:
     """Does `u`'s sentence say "in any order" / "order doesn't matter" (one group: "then" is for all)?"""
     said = sentences[u.sentence][0] if u.sentence < len(sentences := split_sentences(text)) else ""
+    return says_any_order(said)
+
+
+def says_any_order(said: str) -> bool:
+    """Does `said` say "in any order" / "order doesn't matter"?"""
     return ANY_ORDER.search(said) is not None or _ORDER_FREE.search(said) is not None

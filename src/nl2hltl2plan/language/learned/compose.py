@@ -412,6 +412,8 @@ def _chain(
             pool = [j for j in style.joiners[rel] if "{xg}" not in j or "g" in forms[i]]
         clause = forms[i]
         joiner = rng.choice(pool)
+        if rel == "PAR" and joiner.startswith(". "):  # a new sentence ("X. On top of that, Y") is BARE
+            rel = "BARE"
         elidable = pool[0] == ", {x}" or (rel == "PAR" and joiner in (" and {x}", ", and {x}"))
         if elidable and _same_verb(clauses[i - 1], clauses[i]) and rng.random() < 0.6:
             clause = {"": clauses[i].split(" ", 1)[1]}  # "put X in Y and Z in W": the verb left out
@@ -462,7 +464,7 @@ def synthesise(
     """`n` instructions of 1-5 spans (one floor plan each, different trials), deterministic for a seed,
     less those that would hold an under-specified annotation (`faithful.composable`) unless `said_only`
     is off (the structure model's training: spans and their order, which an unsaid slot does not touch)."""
-    from nl2hltl2plan.language.learned.span_order import before_pairs
+    from nl2hltl2plan.language.learned.span_order import before_pairs, leading_first
 
     rng = random.Random(seed)
     by_plan = by_floor_plan(items)
@@ -491,7 +493,8 @@ def synthesise(
         lowered = _finish(text, rng)
         ids = [task_letter(i) for i in range(len(chosen))]
         tasks = [t.model_copy(update={"id": i, "text": ""}) for t, i in zip(said, ids, strict=True)]
-        before = [(ids[a], ids[b]) for a, b in before_pairs(rels, targets)]
+        pairs = leading_first(text, spans, rels, before_pairs(rels, targets))
+        before = [(ids[a], ids[b]) for a, b in pairs]
         drawn += 1
         if said_only and not composable(chosen):
             continue

@@ -327,7 +327,8 @@ def structure_reading(
     """The structure model's spans, each read by the grammar + slot model, its confidence and whether a
     span points back at an earlier one; None when a span does not read completely or the whole does not
     pass the word accounting."""
-    reading = structure.read(without_connective_to(instruction))
+    said = without_connective_to(instruction)
+    reading = structure.read(said)
     if not reading.spans:
         return None
     parsed, ambiguities = [], []
@@ -346,7 +347,7 @@ def structure_reading(
         previous = (text, p.tasks[-1])
         parsed.append((p.tasks, p.before))
         ambiguities.append(p.ambiguities)
-    tasks, before, groups = combine_spans(reading, parsed)
+    tasks, before, groups = combine_spans(reading, parsed, said)
     if not complete_and_accounted(instruction, tasks, before):
         return None
     renamed = _renamed_ambiguities(ambiguities, parsed, tasks)

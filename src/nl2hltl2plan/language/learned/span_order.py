@@ -3,7 +3,9 @@
 The spans are read left to right into chains of steps. START opens the first chain; SEQ opens a new
 step after the current one; PAR joins the current step (no order inside a step: "X and Y"); ANY joins
 it too, with the order explicitly left open ("X and Y in any order"); PRE opens a new step just before
-the current one ("before you X, Y": Y first); FREE opens a chain of its own (no order with anything so
+the current one ("before you X, Y": Y first), and a PAR or ANY span right after it joins that new step
+("B, but before that C and D": C and D before B; ANNOTATION_GUIDE.md's "X before Y" over the clause "C
+and D"); FREE opens a chain of its own (no order with anything so
 far); BARE (a new sentence with no temporal word: "X. Y.", "X. Also Y.") opens a chain of its own too,
 unordered like FREE but not free of a later "finally". Every span of a step comes before every span of
 a later step of its chain. LAST ("finally Y", the benchmark's annotation guide) comes after every
@@ -21,6 +23,8 @@ nothing comes before yet) to earlier ones; a pair that would still close a cycle
 [(0, 1), (0, 2), (1, 3), (2, 3)]
 >>> before_pairs(["START", "PRE"])
 [(1, 0)]
+>>> before_pairs(["START", "PRE", "PAR", "SEQ"])
+[(0, 3), (1, 0), (2, 0)]
 >>> before_pairs(["START", "ANY", "LAST"])
 []
 >>> before_pairs(["START", "PAR", "LAST"])
@@ -37,7 +41,10 @@ nothing comes before yet) to earlier ones; a pair that would still close a cycle
 
 from __future__ import annotations
 
+import re
+
 POINTING = ("REF", "RPRE", "ALL")  # relations to a named earlier span, or to all of them
+_AFTERTHOUGHT = re.compile(r"\boh\b", re.I)  # "Oh and Z": a request of its own (`courtesy.without_courtesy`)
 
 
 def before_pairs(relations: list[str], targets: list[int | None] | None = None) -> list[tuple[int, int]]:
@@ -48,14 +55,16 @@ def before_pairs(relations: list[str], targets: list[int | None] | None = None) 
     free = {i for i, rel in enumerate(relations) if rel == "FREE"}  # allowed at any time
     any_order = {i for i, rel in enumerate(relations) if rel == "ANY"}  # its step in any order
     last: list[int] = []
+    pre_open = False  # the spans since the last PRE are all PAR / ANY
     for i, rel in enumerate(relations):
+        pre_open = rel == "PRE" or (pre_open and rel in ("PAR", "ANY"))
         if rel == "LAST" and chains:
             last.append(i)
         elif not chains or rel in ("START", "FREE", "LAST", "BARE") + POINTING:
             chains.append([[i]])
             current = 0
-        elif rel in ("PAR", "ANY"):
-            chains[-1][current].append(i)
+        elif rel in ("PAR", "ANY"):  # after a PRE (and its PARs): in the step PRE put before the current one
+            chains[-1][current - 1 if pre_open else current].append(i)
         elif rel == "PRE":
             chains[-1].insert(current, [i])
             current += 1  # the step read so far stays the current one
@@ -74,6 +83,51 @@ def before_pairs(relations: list[str], targets: list[int | None] | None = None) 
             if firm:  # the chain's last firm step: the earlier ones are before it already
                 pairs += [(x, y) for x in firm[-1]]
     return sorted(drop_cycles(pairs))
+
+
+def leading_first(
+    text: str, spans: list[tuple[int, int]], relations: list[str], pairs: list[tuple[int, int]]
+) -> list[tuple[int, int]]:
+    """`pairs` with what a leading "First X" states where no sequencing word follows it ("First X. Also Y",
+    "First X, and Y, and also Z"): X before every later span not allowed at any time or in any order and not
+    stated before X, as "Finally Y" is after every such span (ANNOTATION_GUIDE.md); the opening step as a
+    whole where more follows it ("First X and Y. Also Z": X and Y before Z). "First X, then Y" (or "First X.
+    Once X is done, Y") states only what its order word does; an afterthought ("Oh and Z") takes no order from
+    it (`courtesy`). `spans`: the spans' character ranges in `text` (the grammar's own "first" openers before
+    the first).
+
+    >>> leading_first("First A, B. Also C", [(6, 7), (9, 10), (17, 18)], ["START", "PAR", "BARE"], [])
+    [(0, 2), (1, 2)]
+    >>> leading_first("First, A. B", [(7, 8), (10, 11)], ["START", "BARE"], [])
+    [(0, 1)]
+    """
+    from nl2hltl2plan.language.grammar.then_steps import says_any_order
+    from nl2hltl2plan.language.grammar.word_tables import FIRST, LEADING
+
+    # "First, A, B and C. Do these in any order.": the remark no span carries frees the list
+    if len(relations) < 2 or says_any_order(text[spans[-1][1] :]):
+        return pairs
+    if len(relations) < 2 or relations[0] != "START" or relations[1] in ("SEQ", "ANY", "REF", "ALL"):
+        return pairs
+    if not any(kind == FIRST and rx.match(text[: spans[0][0]].strip() + " ") for rx, kind in LEADING):
+        return pairs
+    groups: list[list[int]] = []  # a span and the PAR / ANY spans joined to it
+    for i, rel in enumerate(relations):
+        if i and rel in ("PAR", "ANY"):
+            groups[-1].append(i)
+        else:
+            groups.append([i])
+    firsts = groups[0] if len(groups) > 1 else [0]
+    succ: dict[int, set[int]] = {}
+    for x, y in pairs:
+        succ.setdefault(x, set()).add(y)
+    # a group with an ANY span is open as a whole ("C and D in any order"), as for "finally"
+    open_ = {i for g in groups if any(relations[j] == "ANY" for j in g) for i in g}
+    open_ |= {i for i in range(1, len(spans)) if _AFTERTHOUGHT.search(text[spans[i - 1][1] : spans[i][0]])}
+    skip = set(firsts) | open_
+    later = [i for i in range(1, len(relations)) if i not in skip and relations[i] != "FREE"]
+    out = pairs + [(x, y) for x in firsts for y in later if not _reaches(succ, y, x)]
+    return sorted(drop_cycles(out))
 
 
 def _pointed(relations: list[str], targets: list[int | None]) -> list[tuple[int, int]]:

@@ -34,7 +34,7 @@ from nl2hltl2plan.language.content_words import categories
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grounding import find_mentions, tokens
 from nl2hltl2plan.language.learned.compose import ELIDABLE, VERB_GERUND, VERB_PARTICIPLE
-from nl2hltl2plan.language.learned.span_order import before_pairs
+from nl2hltl2plan.language.learned.span_order import before_pairs, leading_first
 from nl2hltl2plan.language.learned.structure import Reading
 from nl2hltl2plan.language.order_words import first_and_last_kept, frees_an_order
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES
@@ -276,9 +276,10 @@ SpanTasks = tuple[list[BaseTaskSpec], list[tuple[str, str]]]
 
 
 def combine_spans(
-    reading: Reading, parsed: list[SpanTasks]
+    reading: Reading, parsed: list[SpanTasks], said: str = ""
 ) -> tuple[list[BaseTaskSpec], list[tuple[str, str]], list[list[str]]]:
-    """Renumber each span's tasks in text order; every task of a span before every task of a later step."""
+    """Renumber each span's tasks in text order; every task of a span before every task of a later step.
+    `said`: the text the spans were read in (a leading "First", `span_order.leading_first`)."""
     tasks: list[BaseTaskSpec] = []
     before: list[tuple[str, str]] = []
     groups: list[list[str]] = []
@@ -290,7 +291,10 @@ def combine_spans(
         ids_of_span.append(list(new.values()))
         if len(new) > 1:
             groups.append(list(new.values()))
-    for a, b in before_pairs([s.relation for s in reading.spans], [s.target for s in reading.spans]):
+    relations = [s.relation for s in reading.spans]
+    spans = [(s.start, s.end) for s in reading.spans]
+    pairs = before_pairs(relations, [s.target for s in reading.spans])
+    for a, b in leading_first(said, spans, relations, pairs):
         before += [(x, y) for x in ids_of_span[a] for y in ids_of_span[b]]
     return tasks, sorted(set(before)), groups
 
