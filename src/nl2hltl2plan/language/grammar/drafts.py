@@ -494,8 +494,8 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
         for p, np in it2.pps:
             if p in G.WITH_PREPS and same(o, np):
                 return True
-    if last_fr.cls in {"slice"} and o.sliced:
-        return True
+    if last_fr.cls in {"slice"} and (o.sliced or any(p in G.WITH_PREPS and np.sliced for p, np in it.pps)):
+        return True  # "slice a tomato and put a pot with a tomato slice in it on the table": the slice cut
     return False
 
 
