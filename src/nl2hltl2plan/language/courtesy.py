@@ -375,11 +375,14 @@ def _wished(m: re.Match[str]) -> str:
 
 
 # a heading that gives one place to every item of its list ("Everything below goes on the desk: A, B, C"):
-# each item, up to the sentence's end, with no place of its own ("A on the shelf") is put there (h202)
+# each item, up to the sentence's end, with no place of its own ("A on the shelf") is put there (h202); the
+# place alone may head it ("Into the cabinet: A and B", "For the dresser: A, B"), and "in this order" before
+# the colon orders the items (h238)
 _PLACE_HEADING = re.compile(
-    rf"{_OPENS}{courtesy_pattern('place_heading', 'place_heading_verb')}\s+"
-    r"(?P<prep>on|onto|in|into|inside)\s+"
-    r"(?P<place>(?:the|a|an|my|your)\s+[a-z -]+?)\s*:\s*(?P<items>[^.;!?]+)",
+    rf"{_OPENS}(?:{courtesy_pattern('place_heading', 'place_heading_verb')}\s+)?"
+    r"(?P<prep>on|onto|in|into|inside|to|for)\s+"
+    r"(?P<place>(?:the|a|an|my|your)\s+[a-z -]+?)(?P<order>\s*,?\s*(?:one\s+(?:by|after)\s+(?:one|the\s+other)\s*,?\s*)?"
+    r"in\s+(?:this|that|the\s+following)\s+order)?\s*:\s*(?P<items>[^.;!?]+)",
     re.I,
 )
 _ITEM_SEP = re.compile(r"(\s*,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)", re.I)
@@ -389,7 +392,7 @@ _HAS_PLACE = re.compile(r"\b(?:on|onto|in|into|inside|goes|go|stays?|remains?)\b
 # what a container item holds is no place of its own ("a mug with a pen in it": the mug goes there, h212)
 _CONTENT = re.compile(
     r"\b(?:with|containing|holding|(?:that|which)(?:'s|\s+has|\s+holds)(?:\s+got)?)\s+(?:[a-z]+\s+){1,4}?"
-    r"(?:in|on|inside)\s+(?:it|them)\b",
+    r"(?:(?:in|on|inside)\s+(?:it|them)|inside)\b",
     re.I,
 )
 
@@ -398,10 +401,13 @@ def _each_placed(m: re.Match[str]) -> str:
     """ "Everything below goes on the desk: a book, then the clock" -> "put a book on the desk, then put the
     clock on the desk"; an item with a place of its own keeps it."""
     parts = _ITEM_SEP.split(m["items"].strip())
+    if m["order"]:  # "..., in this order: A, B and C": each item after the one before
+        parts = [", then " if i % 2 else part for i, part in enumerate(parts)]
+    prep = "on" if m["prep"].lower() == "for" else m["prep"]  # a place alone heads it: "For the dresser: A"
     placed = [
         part
         if i % 2 or _HAS_PLACE.search(_CONTENT.sub("", part))
-        else f"put {part} {m['prep']} {m['place']}"
+        else f"put {part} {prep} {m['place']}"
         for i, part in enumerate(parts)
     ]
     return m["lead"] + "".join(placed)
