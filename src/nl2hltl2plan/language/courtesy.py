@@ -365,7 +365,7 @@ def without_framing(text: str) -> str:
     # an address again after the others ("P.S. Sweetie, ...", "Love, ok so first ...")
     for framing in (_ADDRESSED, _RELAYED, _POSTSCRIPT, _ASIDE_SENTENCE, _UNHURRIED, _ADDRESSED):
         text = framing.sub(lambda m: m["lead"] or "", text)
-    text = _PLACE_HEADING.sub(_each_placed, _unnumbered(text))
+    text = _PLACE_GETS_HEADING.sub(_each_placed, _PLACE_HEADING.sub(_each_placed, _unnumbered(text)))
     return _WISH.sub("", _STATE_WISH.sub(_wished, _SOFTENED.sub(r"\1", text))).strip()
 
 
@@ -385,6 +385,15 @@ _PLACE_HEADING = re.compile(
     r"in\s+(?:this|that|the\s+following)\s+order)?\s*:\s*(?P<items>[^.;!?]+)",
     re.I,
 )
+# the place first ("The nightstand gets three things: A, B and C", "the shelf should get the following: ..."):
+# the same list, each item put on it (h238); a count said must be the items'
+_PLACE_GETS_HEADING = re.compile(
+    r"(?P<lead>^|(?<=[.!?])\s+)(?P<place>(?:the|my|your)\s+[a-z -]+?)\s+(?:gets|receives|(?:should|will|can)\s+get)\s+"
+    r"(?:(?P<count>two|three|four|five|a\s+few|some)\s+(?:things|items)|the\s+following|these)(?P<prep>)(?P<order>)"
+    r"\s*:\s*(?P<items>[^.;!?]+)",
+    re.I,
+)
+_COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5}
 _ITEM_SEP = re.compile(r"(\s*,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)", re.I)
 # an item that says a place of its own, or that it stays ("..., the mug stays put": `negations.unmoved_said`
 # reads it; made "put the mug stays put in the fridge", at exit 0, h205), keeps its words
@@ -401,9 +410,12 @@ def _each_placed(m: re.Match[str]) -> str:
     """ "Everything below goes on the desk: a book, then the clock" -> "put a book on the desk, then put the
     clock on the desk"; an item with a place of its own keeps it."""
     parts = _ITEM_SEP.split(m["items"].strip())
+    said = _COUNTS.get((m.groupdict().get("count") or "").lower())
+    if said is not None and said != (len(parts) + 1) // 2:
+        return m[0]  # "gets three things:" and two said: left as it is
     if m["order"]:  # "..., in this order: A, B and C": each item after the one before
         parts = [", then " if i % 2 else part for i, part in enumerate(parts)]
-    prep = "on" if m["prep"].lower() == "for" else m["prep"]  # a place alone heads it: "For the dresser: A"
+    prep = "on" if m["prep"].lower() in ("for", "") else m["prep"]  # "For the dresser: A"; "X gets: A"
     placed = [
         part
         if i % 2 or _HAS_PLACE.search(_CONTENT.sub("", part))

@@ -184,12 +184,16 @@ def on_the_place(toks: list[tuple[str, int, int]], at: int, m: Mention, places: 
         return False
     if after in (["on", "it"], ["in", "it"], ["on", "top"]):
         return True
-    # "the end table with the statue": a definite thing right after a place no robot moves says which place
-    # it is, as "on it" does; "with the statue too" / "in hand" moves it (h238)
-    return toks[at + 1][0] == "the" and m.start <= at + 3 and (not after or after[0] not in _MOVED_WITH)
+    # "the end table with the statue": a thing that marks places (`marker_things.txt`), said definite right
+    # after a place no robot moves, says which place it is, as "on it" does; "with the statue too" moves it
+    marks = set(m.entry.types) <= MARKER_THINGS and toks[at + 1][0] == "the" and m.start <= at + 3
+    return marks and (not after or after[0] not in _MOVED_WITH)
 
 
 _MOVED_WITH = frozenset({"too", "also", "as", "in", "together", "both"})
+MARKER_THINGS = frozenset(
+    w.strip() for w in Path(__file__).with_name("marker_things.txt").read_text().splitlines() if w and w[0] != "#"
+)
 
 
 def pair_start(toks: list[tuple[str, int, int]], start: int) -> int:
