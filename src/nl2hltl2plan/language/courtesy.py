@@ -374,6 +374,10 @@ def _wished(m: re.Match[str]) -> str:
     return f"make sure {m['x']} {_ARE.get(m['be'].lower(), m['be'])} "
 
 
+# "in this order" said of a list before its colon ("..., one by one in this order: A, B"): the items in turn
+IN_THIS_ORDER = (
+    r"\s*,?\s*(?:one\s+(?:by|after)\s+(?:one|the\s+other)\s*,?\s*)?in\s+(?:this|that|the\s+following)\s+order"
+)
 # a heading that gives one place to every item of its list ("Everything below goes on the desk: A, B, C"):
 # each item, up to the sentence's end, with no place of its own ("A on the shelf") is put there (h202); the
 # place alone may head it ("Into the cabinet: A and B", "For the dresser: A, B"), and "in this order" before
@@ -381,14 +385,14 @@ def _wished(m: re.Match[str]) -> str:
 _PLACE_HEADING = re.compile(
     rf"{_OPENS}(?:{courtesy_pattern('place_heading', 'place_heading_verb')}\s+)?"
     r"(?P<prep>on|onto|in|into|inside|to|for)\s+"
-    r"(?P<place>(?:the|a|an|my|your)\s+[a-z -]+?)(?P<order>\s*,?\s*(?:one\s+(?:by|after)\s+(?:one|the\s+other)\s*,?\s*)?"
-    r"in\s+(?:this|that|the\s+following)\s+order)?\s*:\s*(?P<items>[^.;!?]+)",
+    rf"(?P<place>(?:the|a|an|my|your)\s+[a-z -]+?)(?P<order>{IN_THIS_ORDER})?\s*:\s*(?P<items>[^.;!?]+)",
     re.I,
 )
 # the place first ("The nightstand gets three things: A, B and C", "the shelf should get the following: ..."):
 # the same list, each item put on it (h238); a count said must be the items'
 _PLACE_GETS_HEADING = re.compile(
-    r"(?P<lead>^|(?<=[.!?])\s+)(?P<place>(?:the|my|your)\s+[a-z -]+?)\s+(?:gets|receives|(?:should|will|can)\s+get)\s+"
+    r"(?P<lead>^|(?<=[.!?])\s+)(?P<place>(?:the|my|your)\s+[a-z -]+?)\s+"
+    r"(?:gets|receives|(?:should|will|can)\s+get)\s+"
     r"(?:(?P<count>two|three|four|five|a\s+few|some)\s+(?:things|items)|the\s+following|these)(?P<prep>)(?P<order>)"
     r"\s*:\s*(?P<items>[^.;!?]+)",
     re.I,

@@ -191,9 +191,8 @@ def on_the_place(toks: list[tuple[str, int, int]], at: int, m: Mention, places: 
 
 
 _MOVED_WITH = frozenset({"too", "also", "as", "in", "together", "both"})
-MARKER_THINGS = frozenset(
-    w.strip() for w in Path(__file__).with_name("marker_things.txt").read_text().splitlines() if w and w[0] != "#"
-)
+_MARKERS = Path(__file__).with_name("marker_things.txt").read_text().splitlines()
+MARKER_THINGS = frozenset(w.strip() for w in _MARKERS if w[:1].isalpha())
 
 
 def pair_start(toks: list[tuple[str, int, int]], start: int) -> int:

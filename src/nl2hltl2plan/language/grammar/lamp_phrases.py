@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import DETERMINERS
+from nl2hltl2plan.language.courtesy import IN_THIS_ORDER
 from nl2hltl2plan.language.grammar.clauses import Clause
 from nl2hltl2plan.language.grammar.draft_tasks import Draft
 from nl2hltl2plan.language.grammar.frames import Frame, dest_of
@@ -211,7 +212,7 @@ _HEADED_UNDER = re.compile(
     rf"|(?:use|using)\s+(?P<lamp2>{_A_LAMP})\s+to\s+{_LOOK_VERB}\s+(?:these|the\s+following)"
     rf"|{_LOOK_VERB}\s+(?:these|the\s+following|(?P<n2>{_SOME})\s+(?:things|items|objects))\s+under\s+"
     rf"(?P<lamp3>{_A_LAMP}))"
-    r"(?P<order>\s*,?\s*(?:one\s+(?:by|after)\s+(?:one|the\s+other)\s*,?\s*)?in\s+(?:this|that|the\s+following)\s+order)?"
+    rf"(?P<order>{IN_THIS_ORDER})?"
     r"\s*:\s*(?P<items>[^.;!?]+)",
     re.I,
 )
@@ -304,9 +305,11 @@ def _headed_under(m: re.Match[str]) -> str:
     n = (m["n"] or m["n2"] or "").lower()
     parts = [p.strip() for p in _ITEM_SPLIT.split(m["items"].strip()) if p.strip()]
     then = [bool(m["order"]) or bool(_THEN_ITEM.match(p)) for p in parts]
-    things = [_FIRST_ITEM.sub("", _THEN_ITEM.sub("", p)) if k == 0 else _THEN_ITEM.sub("", p) for k, p in enumerate(parts)]
-    first = bool(parts) and bool(_FIRST_ITEM.search(parts[0]))
-    if len(things) < 2 or not all(_looked_at(p) for p in things) or _NUMBER.get(n, len(things)) != len(things):
+    things = [_THEN_ITEM.sub("", p) for p in parts]
+    first = bool(things) and bool(_FIRST_ITEM.search(things[0]))  # "A first, then B"
+    things[:1] = [_FIRST_ITEM.sub("", t) for t in things[:1]]
+    counted = _NUMBER.get(n, len(things)) == len(things)
+    if len(things) < 2 or not all(_looked_at(p) for p in things) or not counted:
         return m[0]
     said = _under(things[0], lamp, m[0][0].isupper()) + (" first" if first else "")
     for k, p in enumerate(things[1:], 1):

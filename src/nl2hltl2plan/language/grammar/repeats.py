@@ -254,7 +254,7 @@ def _copy_inside(text: str, m: re.Match[str]) -> str:
         if len(things) != 1:
             continue
         counted = _COUNTED_TASK.match(task.strip())
-        if counted and _one_thing(counted["thing"]):  # ("move the two books to the dresser, and the keys too")
+        if counted and _one_thing(counted["thing"]):  # ("move two books to the dresser, and the keys too")
             return f"{join}{counted['verb'].lower()} {np} {counted['place']}"
         if not re.match(_COUNT, np, re.I):
             continue
