@@ -79,6 +79,10 @@ def bedroom():
         # before: refused ("goes" after "in it" was not read as the placement)
         ("The pot with the knife in it goes in the sink.",
          ["place_in_container ButterKnife|Knife in Pot -> SinkBasin"], []),
+        # before: partial (the mug's "in it" was taken for its place)
+        ("A mug with a spoon in it and a bowl with an apple in it go on the dining table.",
+         ["place_in_container Spoon in Mug -> DiningTable",
+          "place_in_container Apple in Bowl -> DiningTable"], []),
         ("For the dining table, in this order: an egg and a bowl.",
          ["place Egg -> DiningTable", "place Bowl -> DiningTable"], [("A", "B")]),
     ],
