@@ -99,6 +99,17 @@ def test_a_source_after_a_shared_place_is_where_the_thing_is_now(bedroom):
 
 
 @pytest.mark.data
+def test_along_with_a_thing_and_its_source_puts_it_there_too():
+    from nl2hltl2plan.worlds import load_world
+
+    # before: partial ('hand towel' (place))
+    said = "A candle goes in the tub, along with the hand towel from the holder."
+    assert reading(said, load_world("FloorPlan422")) == (
+        ["place Candle -> BathtubBasin", "place HandTowel -> BathtubBasin"], []
+    )
+
+
+@pytest.mark.data
 def test_a_thing_that_marks_a_place_is_a_landmark_and_a_small_one_is_not(kitchen):
     from nl2hltl2plan.worlds import load_world
 
