@@ -383,7 +383,7 @@ IN_THIS_ORDER = (
 # place alone may head it ("Into the cabinet: A and B", "For the dresser: A, B"), and "in this order" before
 # the colon orders the items (h238)
 _PLACE_HEADING = re.compile(
-    rf"{_OPENS}(?:{courtesy_pattern('place_heading', 'place_heading_verb')}\s+)?"
+    rf"{_OPENS}(?:please\s+)?(?:{courtesy_pattern('place_heading', 'place_heading_verb')}\s+)?"
     r"(?P<prep>on|onto|in|into|inside|to|for)\s+"
     rf"(?P<place>(?:the|a|an|my|your)\s+[a-z -]+?)(?P<order>{IN_THIS_ORDER})?\s*:\s*(?P<items>[^.;!?]+)",
     re.I,
