@@ -90,11 +90,11 @@ def names_object_before(text: str, at: int) -> bool:
 
 
 # what a container holds, said after it: "the pot with the knife in it", "a box with a card inside" (h238)
-_HELD_AFTER = re.compile(
+_HELD = (
     r"\s+(?:with|containing|holding)\s+(?:with\s+)?(?P<held>(?:the|a|an|two|some)\s+[a-z]+(?:\s+[a-z]+){0,3}?)"
-    r"(?:\s+(?:in|on|inside)\s+(?:it|them)|\s+inside)?\s*$",
-    re.I,
+    r"(?:\s+(?:in|on|inside)\s+(?:it|them)|\s+inside)?"
 )
+_HELD_AFTER = re.compile(rf"{_HELD}\s*$", re.I)
 
 
 def names_holder_before(text: str, at: int) -> bool:
@@ -120,11 +120,7 @@ def _only_names(body: str, end: int) -> bool:
 
 
 # a container and what it holds, then its place: "the pot with the knife in it on the table" (h238)
-_HOLDER_PLACED = re.compile(
-    r"^(?P<x>.+?)\s+(?:with|containing|holding)\s+(?:with\s+)?(?P<held>(?:the|a|an|two|some)\s+[a-z]+"
-    r"(?:\s+[a-z]+){0,3}?)(?:\s+(?:in|on|inside)\s+(?:it|them)|\s+inside)?\s+(?=(?:in|into|to|onto|on)\s)",
-    re.I,
-)
+_HOLDER_PLACED = re.compile(rf"^(?P<x>.+?){_HELD}\s+(?=(?:in|into|to|onto|on)\s)", re.I)
 
 
 def verbless_placement(body: str) -> bool:
