@@ -25,6 +25,7 @@ from functools import cache
 from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import Unread, categories, phrase_list_pattern, phrase_words
+from nl2hltl2plan.language.landmarks import ROOM_WORDS
 
 
 def courtesy_pattern(*kinds: str) -> str:
@@ -419,6 +420,8 @@ def _each_placed(m: re.Match[str]) -> str:
         return m[0]  # "gets three things:" and two said: left as it is
     if m["order"]:  # "..., in this order: A, B and C": each item after the one before
         parts = [", then " if i % 2 else part for i, part in enumerate(parts)]
+    if m["prep"].lower() == "for" and m["place"].split(None, 1)[-1].lower() in ROOM_WORDS:
+        return m[0]  # "For the kitchen: ...": a room, no place to put things
     prep = "on" if m["prep"].lower() in ("for", "") else m["prep"]  # "For the dresser: A"; "X gets: A"
     placed = [
         part
