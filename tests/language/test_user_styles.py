@@ -311,8 +311,8 @@ KNOWN_WRONG: set[str] = {
     # after a placing moves the apple to the sink; a negation's "it" forbids every placing of the apple
     "put the apple in the fridge two in the sink",
     "put the egg in the fridge don't put the apple in it",
-    # h238's held-out (scored once at a180ac6d, wrong at the branch point too): a slicing said in a sentence of
-    # its own (";") before "a pot with an apple slice in it" stays a set_state task of its own
+    # h238's held-out (scored once at a180ac6d, wrong at the branch point too): a slicing said in a sentence
+    # of its own (";") before "a pot with an apple slice in it" stays a set_state task of its own
     "Cut an apple; a pot with an apple slice in it should end up on the table.",
 }
 
