@@ -338,6 +338,9 @@ KNOWN_WRONG: set[str] = {
     "Chill an apple and put it on the counter. Then slice another apple, heat a slice and put it in the "
     "fridge. Heat a slice of potato and wash a slice of lettuce, and put both slices on the white table next "
     "to the fork.",
+    # h238's held-out (scored once at a180ac6d, wrong at the branch point too): a slicing said in a sentence
+    # of its own (";") before "a pot with an apple slice in it" stays a set_state task of its own
+    "Cut an apple; a pot with an apple slice in it should end up on the table.",
 }
 
 

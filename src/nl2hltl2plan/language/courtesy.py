@@ -25,6 +25,7 @@ from functools import cache
 from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import Unread, categories, phrase_list_pattern, phrase_words
+from nl2hltl2plan.language.landmarks import ROOM_WORDS
 
 
 def courtesy_pattern(*kinds: str) -> str:
@@ -371,7 +372,7 @@ def without_framing(text: str) -> str:
     # an address again after the others ("P.S. Sweetie, ...", "Love, ok so first ...")
     for framing in (_ADDRESSED, _RELAYED, _POSTSCRIPT, _ASIDE_SENTENCE, _UNHURRIED, _ADDRESSED):
         text = framing.sub(lambda m: m["lead"] or "", text)
-    text = _PLACE_HEADING.sub(_each_placed, _unnumbered(text))
+    text = _PLACE_GETS_HEADING.sub(_each_placed, _PLACE_HEADING.sub(_each_placed, _unnumbered(text)))
     return _WISH.sub("", _STATE_WISH.sub(_wished, _SOFTENED.sub(r"\1", text))).strip()
 
 
@@ -380,14 +381,30 @@ def _wished(m: re.Match[str]) -> str:
     return f"make sure {m['x']} {_ARE.get(m['be'].lower(), m['be'])} "
 
 
+# "in this order" said of a list before its colon ("..., one by one in this order: A, B"): the items in turn
+IN_THIS_ORDER = (
+    r"\s*,?\s*(?:one\s+(?:by|after)\s+(?:one|the\s+other)\s*,?\s*)?in\s+(?:this|that|the\s+following)\s+order"
+)
 # a heading that gives one place to every item of its list ("Everything below goes on the desk: A, B, C"):
-# each item, up to the sentence's end, with no place of its own ("A on the shelf") is put there (h202)
+# each item, up to the sentence's end, with no place of its own ("A on the shelf") is put there (h202); the
+# place alone may head it ("Into the cabinet: A and B", "For the dresser: A, B"), and "in this order" before
+# the colon orders the items (h238)
 _PLACE_HEADING = re.compile(
-    rf"{_OPENS}{courtesy_pattern('place_heading', 'place_heading_verb')}\s+"
-    r"(?P<prep>on|onto|in|into|inside)\s+"
-    r"(?P<place>(?:the|a|an|my|your)\s+[a-z -]+?)\s*:\s*(?P<items>[^.;!?]+)",
+    rf"{_OPENS}(?:please\s+)?(?:{courtesy_pattern('place_heading', 'place_heading_verb')}\s+)?"
+    r"(?P<prep>on|onto|in|into|inside|to|for)\s+"
+    rf"(?P<place>(?:the|a|an|my|your)\s+[a-z -]+?)(?P<order>{IN_THIS_ORDER})?\s*:\s*(?P<items>[^.;!?]+)",
     re.I,
 )
+# the place first ("The nightstand gets three things: A, B and C", "the shelf should get the following: ..."):
+# the same list, each item put on it (h238); a count said must be the items'
+_PLACE_GETS_HEADING = re.compile(
+    r"(?P<lead>^|(?<=[.!?])\s+)(?P<place>(?:the|my|your)\s+[a-z -]+?)\s+"
+    r"(?:gets|receives|(?:should|will|can)\s+get)\s+"
+    r"(?:(?P<count>two|three|four|five|a\s+few|some)\s+(?:things|items)|the\s+following|these)(?P<prep>)(?P<order>)"
+    r"\s*:\s*(?P<items>[^.;!?]+)",
+    re.I,
+)
+_COUNTS = {"two": 2, "three": 3, "four": 4, "five": 5}
 _ITEM_SEP = re.compile(r"(\s*,\s*(?:and\s+)?(?:then\s+)?|\s+and\s+(?:then\s+)?|\s+then\s+)", re.I)
 # an item that says a place of its own, or that it stays ("..., the mug stays put": `negations.unmoved_said`
 # reads it; made "put the mug stays put in the fridge", at exit 0, h205), keeps its words
@@ -395,7 +412,7 @@ _HAS_PLACE = re.compile(r"\b(?:on|onto|in|into|inside|goes|go|stays?|remains?)\b
 # what a container item holds is no place of its own ("a mug with a pen in it": the mug goes there, h212)
 _CONTENT = re.compile(
     r"\b(?:with|containing|holding|(?:that|which)(?:'s|\s+has|\s+holds)(?:\s+got)?)\s+(?:[a-z]+\s+){1,4}?"
-    r"(?:in|on|inside)\s+(?:it|them)\b",
+    r"(?:(?:in|on|inside)\s+(?:it|them)|inside)\b",
     re.I,
 )
 
@@ -404,10 +421,18 @@ def _each_placed(m: re.Match[str]) -> str:
     """ "Everything below goes on the desk: a book, then the clock" -> "put a book on the desk, then put the
     clock on the desk"; an item with a place of its own keeps it."""
     parts = _ITEM_SEP.split(m["items"].strip())
+    said = _COUNTS.get((m.groupdict().get("count") or "").lower())
+    if said is not None and said != (len(parts) + 1) // 2:
+        return m[0]  # "gets three things:" and two said: left as it is
+    if m["order"]:  # "..., in this order: A, B and C": each item after the one before
+        parts = [", then " if i % 2 else part for i, part in enumerate(parts)]
+    if m["prep"].lower() == "for" and m["place"].split(None, 1)[-1].lower() in ROOM_WORDS:
+        return m[0]  # "For the kitchen: ...": a room, no place to put things
+    prep = "on" if m["prep"].lower() in ("for", "") else m["prep"]  # "For the dresser: A"; "X gets: A"
     placed = [
         part
         if i % 2 or _HAS_PLACE.search(_CONTENT.sub("", part))
-        else f"put {part} {m['prep']} {m['place']}"
+        else f"put {part} {prep} {m['place']}"
         for i, part in enumerate(parts)
     ]
     return m["lead"] + "".join(placed)

@@ -181,7 +181,19 @@ def on_the_place(toks: list[tuple[str, int, int]], at: int, m: Mention, places: 
     apple on it" is a plate to move)."""
     before = [o for o in places if o.end == at and not carried(o)]
     after = [w for w, _, _ in toks[m.end : m.end + 2]]
-    return bool(before) and after in (["on", "it"], ["in", "it"], ["on", "top"])
+    if not before:
+        return False
+    if after in (["on", "it"], ["in", "it"], ["on", "top"]):
+        return True
+    # "the end table with the statue": a thing that marks places (`marker_things.txt`), said definite right
+    # after a place no robot moves, says which place it is, as "on it" does; "with the statue too" moves it
+    marks = set(m.entry.types) <= MARKER_THINGS and toks[at + 1][0] == "the" and m.start <= at + 3
+    return marks and (not after or after[0] not in _MOVED_WITH)
+
+
+_MOVED_WITH = frozenset({"too", "also", "as", "in", "together", "both"})
+_MARKERS = Path(__file__).with_name("marker_things.txt").read_text().splitlines()
+MARKER_THINGS = frozenset(w.strip() for w in _MARKERS if w[:1].isalpha())
 
 
 def pair_start(toks: list[tuple[str, int, int]], start: int) -> int:

@@ -342,11 +342,20 @@ def _read_frame(r: _Reading, fr: Frame, it: Item, look: AffordanceLookup | None)
             r.light = r.light or np
     if o is not None and r.container is None and puts_into(r.obj, fr, it):
         r.container, r.obj = r.obj, o  # "move a cup to the sink and put a knife in the cup"
+    if o is not None and r.container is None and r.obj is not None and _holds_it(o, r.obj, it):
+        r.container = o  # "slice a tomato and put a pot with a tomato slice in it on the table"
     if o is not None:
         _read_object(r, o)
     for p, np in it.pps:
         _read_pp(r, fr, it, p, np, look)
     _read_destination(r, fr, it)
+
+
+def _holds_it(o: NP, thing: NP, it: Item) -> bool:
+    """Is `o` a movable container said to hold the task's thing ("a pot with a tomato slice in it")?"""
+    return o.is_movable_receptacle() and any(
+        p in G.WITH_PREPS and (same(np, thing) or (np.sliced and np.entry is None)) for p, np in it.pps
+    )  # ("a pot containing a slice": the slice of the thing cut before)
 
 
 def _read_object(r: _Reading, o: NP) -> None:

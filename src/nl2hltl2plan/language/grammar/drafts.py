@@ -171,9 +171,10 @@ class DraftBuilder:
                 if it.obj is not None and not any(p in G.DEST_PREPS for p, _ in it.pps):
                     it.pps.extend(st.context)
         if len(fr.items) > 1:  # "the apple and the egg in the fridge, and the mug in the sink": next place
-            shared = [(p, np) for p, np in fr.items[-1].pps if p in G.DEST_PREPS]
+            last = fr.items[-1]
+            shared = [(p, np) for p, np in last.pps if p in G.DEST_PREPS and not _content_it(last, np)]
             for it in reversed(fr.items[:-1]):
-                own = [(p, np) for p, np in it.pps if p in G.DEST_PREPS]
+                own = [(p, np) for p, np in it.pps if p in G.DEST_PREPS and not _content_it(it, np)]
                 shared = own or shared
                 it.pps.extend([] if own else shared)
             one_of_each_under_a_shared_plural([it.obj for it in fr.items])
@@ -496,9 +497,14 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
         for p, np in it2.pps:
             if p in G.WITH_PREPS and same(o, np):
                 return True
-    if last_fr.cls in {"slice"} and o.sliced:
-        return True
+    if last_fr.cls in {"slice"} and (o.sliced or any(p in G.WITH_PREPS and np.sliced for p, np in it.pps)):
+        return True  # "slice a tomato and put a pot with a tomato slice in it on the table": the slice cut
     return False
+
+
+def _content_it(it: Item, np: NP) -> bool:
+    """Is `np` the "it" of a content said ("a mug with a spoon in it"): no place of the item's own?"""
+    return np.pronoun and any(p in G.WITH_PREPS for p, _ in it.pps)
 
 
 def _canonical_in(np: NP | None, types: set[str] | frozenset[str]) -> bool:

@@ -496,6 +496,8 @@ def _each_of_two(m: re.Match[str]) -> str:
 # placement of its own: "..., and put two rolls in the cabinet"); with no place before it, it stays
 _ALONG_WITH = re.compile(
     r"\s*,?\s+along\s+with\s+(?P<np>(?:(?:the|a|an|two|three|some|both)\s+)+[a-z]+(?:\s+[a-z]+){0,3}?)"
+    # where it is now may follow ("along with the hand towel from the holder": h238)
+    r"(?P<source>\s+(?:from|off)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)?"
     r"(?=\s*(?:[,.;!?]|$|\band\b|\bthen\b))",
     re.I,
 )
@@ -512,7 +514,7 @@ def _along_with(m: re.Match[str]) -> str:
     if not places or _NEGATED.search(before):
         return m[0]
     prep, place = places[-1]
-    return f", and put {m['np']} {'on' if prep == 'to' else prep} the {place.surface}"
+    return f", and put {m['np']}{m['source'] or ''} {'on' if prep == 'to' else prep} the {place.surface}"
 
 
 # "put a pen on that shelf too", "on that same table", "on the same one": the last destination named before

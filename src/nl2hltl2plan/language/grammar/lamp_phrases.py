@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import DETERMINERS
+from nl2hltl2plan.language.courtesy import IN_THIS_ORDER
 from nl2hltl2plan.language.grammar.clauses import Clause
 from nl2hltl2plan.language.grammar.draft_tasks import Draft
 from nl2hltl2plan.language.grammar.frames import Frame, dest_of
@@ -200,6 +201,23 @@ _THINGS_UNDER = re.compile(
     r"\s*:\s*(?P<items>[^.;!?]+)",
     re.I,
 )
+# the same heading in other words (h238): "Two things to look at under the desk lamp: A and B", "look at these
+# under the lamp in this order: A, B, C", "use the desk lamp to look at the following: ...", "inspecting a few
+# things under the desk lamp: A first, then B"; "in this order" before the colon orders the items
+_LOOK_VERB = r"(?:look(?:ing)?\s+at|check(?:ing)?|examin(?:e|ing)|inspect(?:ing)?)"
+_A_LAMP = r"(?:the|a)\s+(?:[a-z]+\s+)?lamp(?:\s+in\s+the\s+corner)?"
+_SOME = r"(?:two|three|four|five|a\s+few|some|several)"
+_HEADED_UNDER = re.compile(
+    rf"\b(?:(?P<n>{_SOME})\s+(?:things|items|objects)\s+to\s+{_LOOK_VERB}\s+under\s+(?P<lamp>{_A_LAMP})"
+    rf"|(?:use|using)\s+(?P<lamp2>{_A_LAMP})\s+to\s+{_LOOK_VERB}\s+(?:these|the\s+following)"
+    rf"|{_LOOK_VERB}\s+(?:these|the\s+following|(?P<n2>{_SOME})\s+(?:things|items|objects))\s+under\s+"
+    rf"(?P<lamp3>{_A_LAMP}))"
+    rf"(?P<order>{IN_THIS_ORDER})?"
+    r"\s*:\s*(?P<items>[^.;!?]+)",
+    re.I,
+)
+_THEN_ITEM = re.compile(r"^(?:and\s+)?then\s+", re.I)
+_FIRST_ITEM = re.compile(r"\s+first$", re.I)
 # "look at A by L and B on M under the desk lamp, and C and D under the floor lamp": each item under its lamp
 # (the rules took "B on M" for a placement)
 _LIST_UNDER = re.compile(
@@ -279,6 +297,26 @@ def _things_under(m: re.Match[str]) -> str:
     return listed or m[0]
 
 
+def _headed_under(m: re.Match[str]) -> str:
+    """ "Two things to look at under the desk lamp: A and B" -> "look at A under the desk lamp and look at B
+    under the desk lamp"; the items one after another where the heading says "in this order", or an item
+    says "then" ("A first, then B"); the text as it was where an item is no thing looked at."""
+    lamp = (m["lamp"] or m["lamp2"] or m["lamp3"]).lower()
+    n = (m["n"] or m["n2"] or "").lower()
+    parts = [p.strip() for p in _ITEM_SPLIT.split(m["items"].strip()) if p.strip()]
+    then = [bool(m["order"]) or bool(_THEN_ITEM.match(p)) for p in parts]
+    things = [_THEN_ITEM.sub("", p) for p in parts]
+    first = bool(things) and bool(_FIRST_ITEM.search(things[0]))  # "A first, then B"
+    things[:1] = [_FIRST_ITEM.sub("", t) for t in things[:1]]
+    counted = _NUMBER.get(n, len(things)) == len(things)
+    if len(things) < 2 or not all(_looked_at(p) for p in things) or not counted:
+        return m[0]
+    said = _under(things[0], lamp, m[0][0].isupper()) + (" first" if first else "")
+    for k, p in enumerate(things[1:], 1):
+        said += (", then " if then[k] else " and " if k == len(things) - 1 else ", ") + _under(p, lamp, False)
+    return said
+
+
 def _list_under(m: re.Match[str]) -> str:
     """ "look at A on L and B under the lamp": each looked at under it, where the list has two items or
     more."""
@@ -291,7 +329,8 @@ def _list_under(m: re.Match[str]) -> str:
 
 def items_under_lamp(text: str) -> str:
     """`text` with each thing listed after an examination under a lamp written as looked at under it."""
-    text = _LIST_UNDER.sub(_list_under, _THINGS_UNDER.sub(_things_under, text))
+    text = _HEADED_UNDER.sub(_headed_under, _THINGS_UNDER.sub(_things_under, text))
+    text = _LIST_UNDER.sub(_list_under, text)
 
     def same(m: re.Match[str]) -> str:  # "do the same" may follow the examination's sentence
         lamp = _lamp_before(m.string, m.start(), sentences=1)

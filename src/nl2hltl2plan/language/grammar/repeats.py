@@ -64,8 +64,9 @@ _SAME_INSIDE = re.compile(
 # "put two candles on the tank, and do the same with two bars of soap": a counted thing for a counted one
 _COUNT = r"(?:two|three|four)"
 _COUNTED_TASK = re.compile(
-    rf"^(?P<verb>[a-z]+)\s+{_COUNT}\s+(?P<thing>[a-z]+(?:\s+[a-z]+){{0,3}}?)\s+"
-    r"(?P<place>(?:in|into|on|onto|inside|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3})$",
+    rf"^(?P<verb>[a-z]+)\s+(?:the\s+)?{_COUNT}\s+(?P<thing>[a-z]+(?:\s+[a-z]+){{0,3}}?)\s+"
+    r"(?:from\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?\s+)?"  # where they are now ("from the bed", h238)
+    r"(?P<place>(?:in|into|on|onto|inside|under|to)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3})$",
     re.I,
 )
 # "X, and do the same with the cup" (no order word): the copy is written where the fragment is
@@ -134,9 +135,10 @@ _GOES_SO = re.compile(
 _LIKEWISE_AGAIN = re.compile(rf"(?<=\blikewise\s)(?P<np>{_NP})\s*,?\s+and\s+likewise\s+(?={_DET}\s)", re.I)
 # "X, and the cup too" / "..., and a slice of potato as well" / "..., plus the cup" inside the sentence of a
 # plain task: "do the same with" said at the end (h216); a place after the thing ("and the cup in the sink
-# too") is no repeat
+# too") is no repeat, but where it is now is ("and the keys from the nightstand too": the source, h238)
 _TOO_AND = re.compile(
-    rf"(?:(?P<join>,\s*and\s+|\s+and\s+)(?P<np>{_NPS}|{_COUNT}\s+{_W}(?:\s+{_W}){{0,3}})\s*,?\s+(?:too|as\s+well)"
+    rf"(?:(?P<join>,\s*and\s+|\s+and\s+)(?P<np>{_NPS}|{_COUNT}\s+{_W}(?:\s+{_W}){{0,3}})"
+    rf"(?:\s+(?:from|off)\s+{_NP})?\s*,?\s+(?:too|as\s+well)"
     rf"|(?P<plus>,\s*(?:and\s+)?plus\s+)(?P<np2>{_NPS}|{_COUNT}\s+{_W}(?:\s+{_W}){{0,3}}))(?=\s*(?:[,.;!?]|$))",
     re.I,
 )
@@ -249,11 +251,13 @@ def _copy_inside(text: str, m: re.Match[str]) -> str:
         copies = [c for c in (_with_thing(task.strip(), x, True, words=_phrase(np, x)) for x in things) if c]
         if copies and len(copies) == len(things):  # "..., and do the same with a pillow and a clock"
             return join + ", and ".join(c[:1].lower() + c[1:] for c in copies)
-        if len(things) != 1 or not re.match(_COUNT, np, re.I):
+        if len(things) != 1:
             continue
         counted = _COUNTED_TASK.match(task.strip())
-        if counted and _one_thing(counted["thing"]):
+        if counted and _one_thing(counted["thing"]):  # ("move two books to the dresser, and the keys too")
             return f"{join}{counted['verb'].lower()} {np} {counted['place']}"
+        if not re.match(_COUNT, np, re.I):
+            continue
         # "move the clock to the dresser, and two pencils too": a counted placing of its own (h216)
         one = _ONE_TASK.match(task.strip())
         if one and not one["put"] and "verb_any" in categories(one["verb"].lower()):

@@ -36,6 +36,7 @@ from nl2hltl2plan.language.grammar.sentence_joins import (
 )
 from nl2hltl2plan.language.grammar.subordinate import after_ref, placed_after, treated_before, treatment_of_it
 from nl2hltl2plan.language.grammar.verbless_items import (
+    names_holder_before,
     names_object_before,
     verbless_placement,
     verbs_written,
@@ -537,7 +538,7 @@ def supply_put(text: str) -> str:
     text = subject_sources(wished_put(text, _WISH), _TO_GO, names_object_before)  # where the thing is
     text = subject_sources(text, _TO_GO_NOWHERE, names_object_before, near_too=False)
     text = _WISH.sub(lambda m: "" if _verb_follows(text, m.end()) else "put ", text)
-    text = _TO_GO.sub(lambda m: " " if names_object_before(text, m.start()) else m.group(0), text)
+    text = _TO_GO.sub(lambda m: " " if names_holder_before(text, m.start()) else m.group(0), text)
     # "start with the apple on the plate" is "first put ..."; "Start with the fork." alone names a task of
     # another sentence (`first_last_sentence`)
     text = _START_WITH.sub(lambda m: "first put " if _PLACE_AFTER.match(text, m.end()) else m[0], text)

@@ -89,6 +89,23 @@ def names_object_before(text: str, at: int) -> bool:
     return bool(mentions) and mentions[-1].char_end == len(text[:at].rstrip())
 
 
+# what a container holds, said after it: "the pot with the knife in it", "a box with a card inside" (h238)
+_HELD = (
+    r"\s+(?:with|containing|holding)\s+(?:with\s+)?(?P<held>(?:the|a|an|two|some)\s+[a-z]+(?:\s+[a-z]+){0,3}?)"
+    r"(?:\s+(?:in|on|inside)\s+(?:it|them)|\s+inside)?"
+)
+_HELD_AFTER = re.compile(rf"{_HELD}\s*$", re.I)
+
+
+def names_holder_before(text: str, at: int) -> bool:
+    """Does a name end right before `at`, or a name and the thing it holds ("the pot with the knife in it
+    goes on the table": the pot goes there, with the knife in it)?"""
+    if names_object_before(text, at):
+        return True
+    held = _HELD_AFTER.search(text[:at])
+    return held is not None and names_object_before(text, held.start()) and bool(find_mentions(held["held"]))
+
+
 def _only_names(body: str, end: int) -> bool:
     """Are the words before `end` names, counts, articles and state words only, a name last?"""
     named = [(m.char_start, m.char_end) for m in find_mentions(body[:end])]
@@ -102,9 +119,15 @@ def _only_names(body: str, end: int) -> bool:
     return bool(words) and listed and names_object_before(head, len(head))
 
 
+# a container and what it holds, then its place: "the pot with the knife in it on the table" (h238)
+_HOLDER_PLACED = re.compile(rf"^(?P<x>.+?){_HELD}\s+(?=(?:in|into|to|onto|on)\s)", re.I)
+
+
 def verbless_placement(body: str) -> bool:
-    """Does the sentence start with object names only ("green apple and the orange", "a cold tomato") and
-    go on with in/into/to/onto/on and a place?"""
+    """Does the sentence start with object names only ("green apple and the orange", "a cold tomato"; a
+    container with what it holds) and go on with in/into/to/onto/on and a place?"""
+    if (holder := _HOLDER_PLACED.match(body)) and _only_names(holder["held"], len(holder["held"])):
+        return _only_names(holder["x"], len(holder["x"])) and bool(find_mentions(body[holder.end() :]))
     words = tokens(body)
     k = next((i for i, (w, _, _) in enumerate(words) if w in _PLACE_PREPS), None)
     if not k:
