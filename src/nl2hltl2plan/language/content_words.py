@@ -20,6 +20,12 @@ from importlib import resources
 
 from nl2hltl2plan.errors import HTTError
 
+# rooms people name (room_words.txt): "the laptop on the desk in the hall"
+ROOM_WORDS = tuple(
+    w
+    for w in resources.files("nl2hltl2plan.language").joinpath("room_words.txt").read_text().splitlines()
+    if w and w[0] != "#"
+)
 DETERMINERS = {"the", "a", "an", "that", "this", "those", "these", "its", "their", "my", "your", "of"}
 # what opens the object of a verb: a determiner (not "of": "a spray of water" names a thing) or a pronoun
 OBJECT_START = frozenset(DETERMINERS - {"of"} | {"it", "them", "some"})

@@ -24,8 +24,13 @@ from collections.abc import Callable
 from functools import cache
 from typing import NamedTuple
 
-from nl2hltl2plan.language.content_words import Unread, categories, phrase_list_pattern, phrase_words
-from nl2hltl2plan.language.landmarks import ROOM_WORDS
+from nl2hltl2plan.language.content_words import (
+    ROOM_WORDS,
+    Unread,
+    categories,
+    phrase_list_pattern,
+    phrase_words,
+)
 
 
 def courtesy_pattern(*kinds: str) -> str:

@@ -12,7 +12,14 @@ import re
 from collections.abc import Callable
 from pathlib import Path
 
-from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories, stems, verb_places
+from nl2hltl2plan.language.content_words import (
+    DETERMINERS,
+    ROOM_WORDS,
+    Unread,
+    categories,
+    stems,
+    verb_places,
+)
 from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.grounding import RECEPTACLES, Mention, alfred_lookup, find_mentions
 from nl2hltl2plan.language.parse_usage import ParseUsage
@@ -234,10 +241,6 @@ _CLAUSE_START = re.compile(
 # a landmark said with a word of nearness ("the apple next to the sink should go in the fridge")
 _NEAR_SAID = re.compile(
     r"\b(?:next\s+to|close\s+to|beside|by|near|between|behind|in\s+front\s+of)\s+(?:the|a|an|two)\s", re.I
-)
-# rooms people name (room_words.txt): "the laptop on the desk in the hall"
-ROOM_WORDS = tuple(
-    w for w in (Path(__file__).with_name("room_words.txt").read_text().splitlines()) if w and w[0] != "#"
 )
 # a part of the room, or the room, after a subject's place: "the book on the armchair in the corner"
 _ROOM_PART_LAST = re.compile(

@@ -74,13 +74,13 @@ from nl2hltl2plan.language.content_words import (
     DETERMINERS,
     LOCATIVE,
     OBJECT_START,
+    ROOM_WORDS,
     Unread,
     categories,
     vocabulary,
     word_categories,
 )
 from nl2hltl2plan.language.grounding import Mention, find_mentions, lexicon, tokens
-from nl2hltl2plan.language.landmarks import ROOM_WORDS
 from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.spelling import (

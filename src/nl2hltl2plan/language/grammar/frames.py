@@ -5,10 +5,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from nl2hltl2plan.domain.task_kinds import MAX_COUNT
+from nl2hltl2plan.language.content_words import ROOM_WORDS
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.phrases import COLOURS, DETERMINERS, NP, match_prep, parse_np, tokens
 from nl2hltl2plan.language.grounding import find_mentions
-from nl2hltl2plan.language.landmarks import ROOM_WORDS
 
 
 @dataclass
