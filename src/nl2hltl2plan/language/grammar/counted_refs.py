@@ -3,6 +3,8 @@ forms the grammar and check 1 read. ALFRED's tasks each take any thing of their 
 of "put one X on A, then the remaining two in B" asks for one X on A and two X in B:
 
 - "the remaining two (Xs)", "the other two", "both of the others", "both of the other Xs" -> "two other Xs";
+- "two others", "another two (Xs)", "two other sets" / "two more slices" (a measure word of the thing before:
+  "a set of keys", "a slice of apple") -> "two other Xs" ("two other sets of keys", "two more slices of apple");
 - "the rest of the Xs", "the remaining Xs", "the rest of them", "the others" -> "all the other Xs", which
   `counts.take_every_instance` reads as what the scene holds less what the other tasks on X take; "the
   remaining X" (one) -> "the other X";
@@ -40,6 +42,15 @@ _ONE_OF = frozenset("one a an another each single".split())
 _COUNTED_OTHER = re.compile(
     rf"\b(?:the\s+(?:remaining|other)\s+(?P<n>{_N})|both\s+(?:of\s+the\s+)?other(?P<s>s)?)\b", re.I
 )
+# "two others", "two other sets", "two more slices", "another two": `n` more things of the type before (h237)
+_COUNTED_MORE = re.compile(
+    r"\b(?:(?P<n>two|three|four|2|3|4)\s+(?:(?P<others>others)|other|more)|another\s+(?P<n2>two|three|four|2|3|4))\b"
+    r"(?:\s+(?P<w>[a-z]+)\b)?",
+    re.I,
+)
+# the words after "two others" that end its noun phrase: a place, a verb of placing, or the clause's end
+_AFTER_COUNT = frozenset("in into inside on onto to under at by near next go goes too also there".split())
+_SLICE_UNITS = frozenset("slices pieces".split())
 # "the rest of the (Xs)", "the rest of them", "the remaining (ones|Xs)", "the others"
 # not "before the others" / "after the rest": the other tasks (an order, `order_relations._OTHERS`; h190)
 _REST = re.compile(
@@ -87,7 +98,7 @@ _COUNT_AFTER = re.compile(
 def counted_references(text: str) -> str:
     """`text` with the counted and ordinal references above written out (a pure function of the text)."""
     text = _ONE_OF_N.sub(_count_of_those, text)
-    for rule in (_counts_after, _lamp_used, _counted_others, _rest, _other_one, _another):
+    for rule in (_counts_after, _lamp_used, _counted_others, _counted_more, _rest, _other_one, _another):
         text = rule(text)
     return text
 
@@ -134,6 +145,7 @@ def _things(text: str) -> list[Mention]:
     for m in find_mentions(text):
         before = [w for w, _, _ in toks[max(0, m.start - 3) : m.start] if w not in _SKIPPED]
         place = bool(before) and before[-1] in _PLACE_WORDS
+        place = place and not (before[-2:-1] and before[-2].startswith("look") and before[-1] == "at")
         if not m.entry.generic and not set(m.entry.types) & LAMPS and not place:
             out.append(m)
     return out
@@ -187,6 +199,42 @@ def _counted_others(text: str) -> str:
         return _cased(f"{n} other {_plural(x)}", m[0]) if x else m[0]
 
     return _COUNTED_OTHER.sub(sub, text)
+
+
+def _counted_more(text: str) -> str:
+    """ "two others" / "another two" / "two other sets" after "a set of keys": "two other sets of keys" (the
+    measure word said, or none, names the thing before); "another two spoons": "two other spoons"."""
+
+    def sub(m: re.Match[str]) -> str:
+        n, word = m["n"] or m["n2"], (m["w"] or "").lower()
+        noun = _noun_at(text, m.end(m.lastindex or 0) if m["others"] else m.end("n2") if m["n2"] else 0)
+        x = _antecedent(text, m.start(), one_of=False)
+        if m["n2"] and word and noun is not None and noun.plural:  # "another two spoons"
+            return _cased(f"{n} other", m[0]) + m[0][m.end("n2") - m.start() :]
+        if x is None or (word and text[m.end() :].lstrip().lower().startswith("of ")):
+            return m[0]  # "two more slices of apple": said whole
+        said = m[0][: (m.start("w") if m["w"] else m.end()) - m.start()].rstrip()
+        other = _cased(f"{n} other", said) if m["n2"] or m["others"] else said.removesuffix("s")
+        sliced = _sliced_before(text, x)
+        if word in _SLICE_UNITS and sliced or (not word or word in _AFTER_COUNT) and sliced:
+            named = f"{word if word in _SLICE_UNITS else 'slices'} of {x.entry.phrase}"
+        elif word and x.entry.phrase.split()[0] + "s" == word and " of " in x.entry.phrase:
+            named = _plural(x)  # "two other sets" after "a set of keys"
+        elif not word or word in _AFTER_COUNT:
+            named = _plural(x)
+        else:
+            return m[0]
+        kept = "" if word and not (word in _AFTER_COUNT) else (" " + m["w"] if m["w"] else "")
+        return f"{other} {named}{kept}"
+
+    return _COUNTED_MORE.sub(sub, text)
+
+
+def _sliced_before(text: str, x: Mention) -> bool:
+    """Is the thing named as a slice ("a slice of apple", "a piece of bread", "an apple slice")?"""
+    before = [w for w, _, _ in tokens(text[: x.char_start])][-2:]
+    after = [w for w, _, _ in tokens(text[x.char_end :])][:1]
+    return bool(set(before) & {"slice", "piece", "sliced"}) or after == ["slice"]
 
 
 def _rest(text: str) -> str:
