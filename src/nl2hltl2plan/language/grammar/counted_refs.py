@@ -5,6 +5,7 @@ of "put one X on A, then the remaining two in B" asks for one X on A and two X i
 - "the remaining two (Xs)", "the other two", "both of the others", "both of the other Xs" -> "two other Xs";
 - "two others", "another two (Xs)", "two other sets" / "two more slices" (a measure word of the thing before:
   "a set of keys", "a slice of apple") -> "two other Xs" ("two other sets of keys", "two more slices of apple");
+  "the other set" / "one more set" after "two sets of keys" -> "the other set of keys" / "another set of keys";
 - "the rest of the Xs", "the remaining Xs", "the rest of them", "the others" -> "all the other Xs", which
   `counts.take_every_instance` reads as what the scene holds less what the other tasks on X take; "the
   remaining X" (one) -> "the other X";
@@ -98,7 +99,8 @@ _COUNT_AFTER = re.compile(
 def counted_references(text: str) -> str:
     """`text` with the counted and ordinal references above written out (a pure function of the text)."""
     text = _ONE_OF_N.sub(_count_of_those, text)
-    for rule in (_counts_after, _lamp_used, _counted_others, _counted_more, _rest, _other_one, _another):
+    rules = (_counts_after, _lamp_used, _counted_others, _counted_more, _other_unit, _rest, _other_one, _another)
+    for rule in rules:
         text = rule(text)
     return text
 
@@ -228,6 +230,27 @@ def _counted_more(text: str) -> str:
         return f"{other} {named}{kept}"
 
     return _COUNTED_MORE.sub(sub, text)
+
+
+_OTHER_UNIT = re.compile(
+    r"\b(?:the\s+other|one\s+more|another|a\s+(?:second|third))\s+(?P<w>[a-z]+)\b(?!\s+of\b)", re.I
+)
+
+
+def _other_unit(text: str) -> str:
+    """ "the other set" after "two sets of keys", "one more set", "another slice" after "a slice of bread": the
+    measure word names the thing before ("the other set of keys", "another slice of bread")."""
+
+    def sub(m: re.Match[str]) -> str:
+        x, word = _antecedent(text, m.start(), one_of=True), m["w"].lower()
+        if x is None:
+            return m[0]
+        if word in ("slice", "piece") and _sliced_before(text, x):
+            return f"{m[0]} of {x.entry.phrase}"
+        unit = x.entry.phrase.split()
+        return f"{m[0]} {' '.join(unit[1:])}" if len(unit) > 2 and unit[1] == "of" and unit[0] == word else m[0]
+
+    return _OTHER_UNIT.sub(sub, text)
 
 
 def _sliced_before(text: str, x: Mention) -> bool:
