@@ -4,8 +4,9 @@ of "put one X on A, then the remaining two in B" asks for one X on A and two X i
 
 - "the remaining two (Xs)", "the other two", "both of the others", "both of the other Xs" -> "two other Xs";
 - "two others", "another two (Xs)", "two other sets" / "two more slices" (a measure word of the thing before:
-  "a set of keys", "a slice of apple") -> "two other Xs" ("two other sets of keys", "two more slices of apple");
-  "the other set" / "one more set" after "two sets of keys" -> "the other set of keys" / "another set of keys";
+  "a set of keys", "a slice of apple") -> "two other Xs" ("two other sets of keys", "two more slices of
+  apple"); "the other set" / "one more set" after "two sets of keys" -> "the other set of keys" / "another
+  set of keys";
 - "the rest of the Xs", "the remaining Xs", "the rest of them", "the others" -> "all the other Xs", which
   `counts.take_every_instance` reads as what the scene holds less what the other tasks on X take; "the
   remaining X" (one) -> "the other X";
@@ -99,8 +100,9 @@ _COUNT_AFTER = re.compile(
 def counted_references(text: str) -> str:
     """`text` with the counted and ordinal references above written out (a pure function of the text)."""
     text = _ONE_OF_N.sub(_count_of_those, text)
-    rules = (_counts_after, _lamp_used, _counted_others, _counted_more, _other_unit, _rest, _other_one, _another)
-    for rule in rules:
+    for rule in (_counts_after, _lamp_used, _counted_others, _counted_more, _other_unit):
+        text = rule(text)
+    for rule in (_rest, _other_one, _another):
         text = rule(text)
     return text
 
@@ -209,25 +211,23 @@ def _counted_more(text: str) -> str:
 
     def sub(m: re.Match[str]) -> str:
         n, word = m["n"] or m["n2"], (m["w"] or "").lower()
-        noun = _noun_at(text, m.end(m.lastindex or 0) if m["others"] else m.end("n2") if m["n2"] else 0)
+        head = m[0][: (m.start("w") if m["w"] else m.end()) - m.start()]  # "two others", "another two "
+        noun = _noun_at(text, m.start("w")) if m["w"] else None
+        # "another two spoons": "two other spoons"; "two more hand towels" stays ("bars" may be a measure)
+        if noun is not None and noun.plural and (m["n2"] or noun.surface.lower() != word):
+            return _cased(f"{n} other ", head) + m[0][len(head) :] if m["n2"] else m[0]
         x = _antecedent(text, m.start(), one_of=False)
-        if m["n2"] and word and noun is not None and noun.plural:  # "another two spoons"
-            return _cased(f"{n} other", m[0]) + m[0][m.end("n2") - m.start() :]
-        if x is None or (word and text[m.end() :].lstrip().lower().startswith("of ")):
+        if x is None or text[m.end() :].lstrip().lower().startswith("of "):
             return m[0]  # "two more slices of apple": said whole
-        said = m[0][: (m.start("w") if m["w"] else m.end()) - m.start()].rstrip()
-        other = _cased(f"{n} other", said) if m["n2"] or m["others"] else said.removesuffix("s")
-        sliced = _sliced_before(text, x)
-        if word in _SLICE_UNITS and sliced or (not word or word in _AFTER_COUNT) and sliced:
-            named = f"{word if word in _SLICE_UNITS else 'slices'} of {x.entry.phrase}"
-        elif word and x.entry.phrase.split()[0] + "s" == word and " of " in x.entry.phrase:
-            named = _plural(x)  # "two other sets" after "a set of keys"
-        elif not word or word in _AFTER_COUNT:
-            named = _plural(x)
+        other = _cased(f"{n} other", head) if m["n2"] or m["others"] else head.rstrip()
+        unit = "" if word in _AFTER_COUNT else word  # a measure word said ("sets", "slices"), or none
+        if _sliced_before(text, x) and (not unit or unit in _SLICE_UNITS):
+            named = f"{unit or 'slices'} of {x.entry.phrase}"
+        elif not unit or (x.entry.phrase.split()[0] + "s" == unit and " of " in x.entry.phrase):
+            named = _plural(x)  # "two others", "two other sets" after "a set of keys"
         else:
-            return m[0]
-        kept = "" if word and not (word in _AFTER_COUNT) else (" " + m["w"] if m["w"] else "")
-        return f"{other} {named}{kept}"
+            return m[0]  # "two more times"
+        return f"{other} {named}" + ("" if unit or not m["w"] else " " + m["w"])
 
     return _COUNTED_MORE.sub(sub, text)
 
@@ -238,8 +238,8 @@ _OTHER_UNIT = re.compile(
 
 
 def _other_unit(text: str) -> str:
-    """ "the other set" after "two sets of keys", "one more set", "another slice" after "a slice of bread": the
-    measure word names the thing before ("the other set of keys", "another slice of bread")."""
+    """ "the other set" / "one more set" after "two sets of keys", "another slice" after "a slice of bread":
+    the measure word names the thing before ("the other set of keys", "another slice of bread")."""
 
     def sub(m: re.Match[str]) -> str:
         x, word = _antecedent(text, m.start(), one_of=True), m["w"].lower()
@@ -247,8 +247,8 @@ def _other_unit(text: str) -> str:
             return m[0]
         if word in ("slice", "piece") and _sliced_before(text, x):
             return f"{m[0]} of {x.entry.phrase}"
-        unit = x.entry.phrase.split()
-        return f"{m[0]} {' '.join(unit[1:])}" if len(unit) > 2 and unit[1] == "of" and unit[0] == word else m[0]
+        unit = x.entry.phrase.split()  # "set of keys": "set" names it
+        return f"{m[0]} {' '.join(unit[1:])}" if unit[1:2] == ["of"] and unit[0] == word else m[0]
 
     return _OTHER_UNIT.sub(sub, text)
 

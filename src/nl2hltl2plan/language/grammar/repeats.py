@@ -129,6 +129,13 @@ _SAME_SAID = re.compile(
     rf"|repeat(?:\s+(?:it|that|this|the\s+same))?\s+(?:with|for))\s+(?={_DET}\s)",
     re.I,
 )
+# "Do the same with a pencil after that.": the order word said last opens the sentence ("After that do the
+# same with a pencil."), as `_ORDER_LEAD` reads it (h237)
+_ORDER_LAST = re.compile(
+    r"(?P<lead>^|[.;!?]\s+)(?P<frag>(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+[^.;!?,]+?)"
+    r"\s*,?\s+(?P<conn>after\s+that|afterwards)(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
 # "do a potato slice the same way (but put it on the table)": "do the same with a potato slice" (h237)
 _SAME_WAY = re.compile(rf"\bdo\s+(?P<np>{_NP})\s+(?:the\s+same\s+way|likewise|the\s+same)\b", re.I)
 # after a placing said with "goes" ("the cup and the pot both go on the table, and so does the knife"):
@@ -207,6 +214,15 @@ def repeated_for_another(text: str) -> str:
             task = _ASKED.sub("", fragment.strip())
         out.append(body)
     return "".join(out) if written else text
+
+
+def order_word_first(text: str) -> str:
+    """ "Do the same with a pencil after that." -> "After that do the same with a pencil." (before the lamp
+    phrases and the repeats read it)."""
+    def first(m: re.Match[str]) -> str:
+        return f"{m['lead']}{m['conn'].capitalize()} {m['frag'][:1].lower()}{m['frag'][1:]}"
+
+    return _ORDER_LAST.sub(first, text)
 
 
 def _goes_there_too(m: re.Match[str]) -> str:
