@@ -86,6 +86,9 @@ def test_counted_others_name_the_thing_before_and_nothing_else():
     assert counted_references("Two hand towels go on the tank and two others go in the sink.") == (
         "Two hand towels go on the tank and two other hand towels go in the sink."
     )
+    for said in ("another pair", "a couple more", "two more of them"):
+        written = counted_references(f"Put a candle on the toilet and {said} in the drawer.")
+        assert written.endswith(" candles in the drawer."), written
     # a count of something else stays as said
     assert counted_references("wash the mug two more times") == "wash the mug two more times"
     assert counted_references("put two mugs in the sink and two more mugs in the cabinet") == (

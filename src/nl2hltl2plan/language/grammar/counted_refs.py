@@ -44,9 +44,11 @@ _ONE_OF = frozenset("one a an another each single".split())
 _COUNTED_OTHER = re.compile(
     rf"\b(?:the\s+(?:remaining|other)\s+(?P<n>{_N})|both\s+(?:of\s+the\s+)?other(?P<s>s)?)\b", re.I
 )
-# "two others", "two other sets", "two more slices", "another two": `n` more things of the type before (h237)
+# "two others", "two other sets", "two more slices", "another two", "a couple more", "another pair", "two more
+# of them": `n` more things of the type before (h237)
 _COUNTED_MORE = re.compile(
-    r"\b(?:(?P<n>two|three|four|2|3|4)\s+(?:(?P<others>others)|other|more)|another\s+(?P<n2>two|three|four|2|3|4))\b"
+    r"\b(?P<core>(?P<n>two|three|four|2|3|4|a\s+couple)\s+(?:(?P<others>others)|(?P<kind>other|more))"
+    r"|(?:another|a\s+further)\s+(?P<n2>two|three|four|2|3|4|pair|couple))\b(?:\s+of\s+(?:them|those|these)\b)?"
     r"(?:\s+(?P<w>[a-z]+)\b)?",
     re.I,
 )
@@ -210,16 +212,17 @@ def _counted_more(text: str) -> str:
     measure word said, or none, names the thing before); "another two spoons": "two other spoons"."""
 
     def sub(m: re.Match[str]) -> str:
-        n, word = m["n"] or m["n2"], (m["w"] or "").lower()
-        head = m[0][: (m.start("w") if m["w"] else m.end()) - m.start()]  # "two others", "another two "
+        n, word = (m["n"] or m["n2"]).lower(), (m["w"] or "").lower()
+        n = "two" if n in ("a couple", "pair", "couple") else n
+        rest = m[0][: m.start("w") - m.start()] if m["w"] else m[0]  # the words before the noun or place
         noun = _noun_at(text, m.start("w")) if m["w"] else None
         # "another two spoons": "two other spoons"; "two more hand towels" stays ("bars" may be a measure)
         if noun is not None and noun.plural and (m["n2"] or noun.surface.lower() != word):
-            return _cased(f"{n} other ", head) + m[0][len(head) :] if m["n2"] else m[0]
+            return _cased(f"{n} other", m[0]) + m[0][len(rest) - 1 :] if m["n2"] else m[0]
         x = _antecedent(text, m.start(), one_of=False)
         if x is None or text[m.end() :].lstrip().lower().startswith("of "):
             return m[0]  # "two more slices of apple": said whole
-        other = _cased(f"{n} other", head) if m["n2"] or m["others"] else head.rstrip()
+        other = _cased(f"{n} {(m['kind'] or 'other').lower()}", m[0])
         unit = "" if word in _AFTER_COUNT else word  # a measure word said ("sets", "slices"), or none
         if _sliced_before(text, x) and (not unit or unit in _SLICE_UNITS):
             named = f"{unit or 'slices'} of {x.entry.phrase}"
