@@ -1,7 +1,8 @@
 """References by count, type and manner (issue 28, h237): others of the type named before, counted ("two
 others", "another two", "two other sets" after "a set of keys", "two more slices", "the other set", "one more
 set"), and the task before for another thing ("repeat with X", "do X the same way but put it on Y", "likewise
-X" after a heating said with its microwave, "do the same with X after that"). Before, the counted others
+X" after a heating said with its microwave, "do the same with X after that"), and "there" after "that same
+side table" (that table, not the bowl named before it). Before, the counted others
 joined the task before (its count and place replaced) or were left unread, and the repeats were unread or
 read as a bare placing. The dev set's lines (styles/paper_h237dev.txt) are swept under `-m sweep`."""
 
@@ -71,6 +72,13 @@ COLD_BREAD, POT = "cool_place Bread(sliced) -> GarbageCan", "cool_place Pot -> S
             "Look at a watch under the floor lamp. Do the same with a pencil after that.",
             [PENCIL, WATCH],
             {(WATCH, PENCIL)},
+        ),
+        (  # "there" was the bowl (the last place said with "the/a/an"): the knife put in the bowl, at exit 0
+            "Heat an egg and put it on the side table. Put a knife in a bowl and take the bowl to that same side "
+            "table, and the butter knife goes there too.",
+            ["heat_place Egg -> SideTable", "place ButterKnife -> SideTable",
+             "place_in_container Knife|ButterKnife in Bowl -> SideTable"],
+            set(),
         ),
     ],
 )

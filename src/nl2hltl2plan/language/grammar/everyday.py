@@ -371,8 +371,9 @@ def _destination_phrase(words: int) -> re.Pattern[str]:
     table" needs four, where "that table" is the last table named)."""
     return re.compile(
         r"(?<!next )(?<!close )\b(?P<prep>in|into|inside|on|onto|to)\s+"
-        # "on the back of the toilet": the part of a thing ("back", "top") names no place; its thing does
-        rf"(?:the\s+(?:back|top|side|edge|front|lid)\s+of\s+)?(?P<np>(?:the|a|an)(?:\s+[a-z]+){{1,{words}}})",
+        # "on the back of the toilet": a part names no place, its thing does; "to that same table" is one
+        r"(?:the\s+(?:back|top|side|edge|front|lid)\s+of\s+)?"
+        rf"(?P<np>(?:(?:the|that)(?:\s+same)?|a|an)(?:\s+[a-z]+){{1,{words}}})",
         re.I,
     )
 
