@@ -20,6 +20,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
 
 TYPES = {"Apple", "GarbageCan", "CounterTop", "Microwave", "KeyChain", "FloorLamp", "Ottoman", "ArmChair"}
 TYPES |= {"Sofa", "Bread", "Egg", "Tomato", "Pot", "SinkBasin", "Watch", "Pencil", "WineBottle", "Cabinet"}
+TYPES |= {"Knife", "ButterKnife", "Bowl", "SideTable"}
 APPLE, APPLES = "heat_place Apple(sliced) -> GarbageCan", "place_two 2x Apple(sliced) -> CounterTop"
 KEYS, KEYS_TWO = "examine_in_light KeyChain under FloorLamp", "place_two 2x KeyChain -> Ottoman"
 BREAD, TOMATO = "heat_place Bread(sliced) -> GarbageCan", "heat_place Tomato(sliced) -> CounterTop"
@@ -73,7 +74,7 @@ COLD_BREAD, POT = "cool_place Bread(sliced) -> GarbageCan", "cool_place Pot -> S
             [PENCIL, WATCH],
             {(WATCH, PENCIL)},
         ),
-        (  # "there" was the bowl (the last place said with "the/a/an"): the knife put in the bowl, at exit 0
+        (  # "there" was the bowl (the last place said with "the/a/an"): a knife put in it, at exit 0
             "Heat an egg and put it on the side table. Put a knife in a bowl and take the bowl to that same side "
             "table, and the butter knife goes there too.",
             ["heat_place Egg -> SideTable", "place ButterKnife -> SideTable",
