@@ -75,8 +75,8 @@ COLD_BREAD, POT = "cool_place Bread(sliced) -> GarbageCan", "cool_place Pot -> S
             {(WATCH, PENCIL)},
         ),
         (  # "there" was the bowl (the last place said with "the/a/an"): a knife put in it, at exit 0
-            "Heat an egg and put it on the side table. Put a knife in a bowl and take the bowl to that same side "
-            "table, and the butter knife goes there too.",
+            "Heat an egg and put it on the side table. Put a knife in a bowl and take the bowl to that "
+            "same side table, and the butter knife goes there too.",
             ["heat_place Egg -> SideTable", "place ButterKnife -> SideTable",
              "place_in_container Knife|ButterKnife in Bowl -> SideTable"],
             set(),
