@@ -115,3 +115,25 @@ def test_h237_dev_set():
     rows = [(gt, trust_sets.outcome(gt)[0]) for gt in trust_sets.load("paper_h237dev")]
     assert [gt.instruction for gt, what in rows if what == "wrong"] == []
     assert sum(what == "converted" for _, what in rows) >= 23
+
+
+@pytest.mark.data
+def test_a_guard_said_before_its_negation_is_no_constraint_for_ever():
+    """ "Until X, don't touch the keys": the guard lifts the constraint; read as a constraint for ever, the
+    keys of a later task could never be picked up (h179's held line 14, reached once "another set" read)."""
+    from nl2hltl2plan.language.translate import translate
+    from nl2hltl2plan.worlds import load_world
+
+    world = load_world(
+        "FloorPlan322",
+        [
+            "train/pick_and_place_simple-BaseballBat-None-Bed-322/trial_T20190908_115151_138786",
+            "train/pick_two_obj_and_place-KeyChain-None-SideTable-322/trial_T20190909_034001_524438",
+        ],
+    )
+    head = "Move the bat from the floor to the bed. Until {}, don't touch the keys. Then put two keys on the "
+    head += "bed."
+    named = translate(head.format("the bat is on the bed"), world, "offline", build=False, actions="none")
+    assert [c.until for c in named.constraint_specs] == ["A"] and named.unparsed == []
+    vague = translate(head.format("that's done"), world, "offline", build=False, actions="none")
+    assert vague.constraint_specs == [] and vague.unparsed  # "that" names no thing: unread, not for ever

@@ -149,9 +149,14 @@ def _things(text: str) -> list[Mention]:
     toks = tokens(text)
     out = []
     for m in find_mentions(text):
-        before = [w for w, _, _ in toks[max(0, m.start - 3) : m.start] if w not in _SKIPPED]
-        place = bool(before) and before[-1] in _PLACE_WORDS
-        place = place and not (before[-2:-1] and before[-2].startswith("look") and before[-1] == "at")
+        # the word before it, past determiners and describing words ("in the blue recycling bin"); "look at X"
+        # names a thing
+        said = [
+            i for i in range(max(0, m.start - 3), m.start)
+            if toks[i][0] in _PLACE_WORDS or (toks[i][0] not in _SKIPPED and categories(toks[i][0]))
+        ]
+        place = bool(said) and toks[said[-1]][0] in _PLACE_WORDS
+        place = place and not (toks[said[-1]][0] == "at" and toks[said[-1] - 1][0].startswith("look"))
         if not m.entry.generic and not set(m.entry.types) & LAMPS and not place:
             out.append(m)
     return out
