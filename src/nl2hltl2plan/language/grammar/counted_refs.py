@@ -47,7 +47,7 @@ _COUNTED_OTHER = re.compile(
 # "two others", "two other sets", "two more slices", "another two", "a couple more", "another pair", "two more
 # of them": `n` more things of the type before (h237)
 _COUNTED_MORE = re.compile(
-    r"\b(?P<core>(?P<n>two|three|four|2|3|4|a\s+couple)\s+(?:(?P<others>others)|(?P<kind>other|more))"
+    r"\b(?:(?P<n>two|three|four|2|3|4|a\s+couple)\s+(?:(?P<others>others)|(?P<kind>other|more))"
     r"|(?:another|a\s+further)\s+(?P<n2>two|three|four|2|3|4|pair|couple))\b(?:\s+of\s+(?:them|those|these)\b)?"
     r"(?:\s+(?P<w>[a-z]+)\b)?",
     re.I,
@@ -102,9 +102,8 @@ _COUNT_AFTER = re.compile(
 def counted_references(text: str) -> str:
     """`text` with the counted and ordinal references above written out (a pure function of the text)."""
     text = _ONE_OF_N.sub(_count_of_those, text)
-    for rule in (_counts_after, _lamp_used, _counted_others, _counted_more, _other_unit):
-        text = rule(text)
-    for rule in (_rest, _other_one, _another):
+    rules = (_counts_after, _lamp_used, _counted_others, _counted_more, _other_unit)
+    for rule in (*rules, _rest, _other_one, _another):
         text = rule(text)
     return text
 
