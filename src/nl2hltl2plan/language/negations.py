@@ -283,6 +283,12 @@ def _listed(words: list[str], named: list[Mention]) -> bool:
     return all(set(words[a.end : _determined(words, b.start)]) <= joins for a, b in itertools.pairwise(named))
 
 
+# "Until the bat is on the bed, don't touch the keys": the guard said before its negation, in its sentence
+_FRONTED_UNTIL = re.compile(
+    r"(?:^|[.;!?]\s+)(?:until|till)\s+(?P<ref>[^,.;!?]+?)\s*,\s*(?:please\s+)?$", re.I
+)
+
+
 def _negation(
     text: str,
     toks: list[tuple[str, int, int]],
@@ -299,6 +305,8 @@ def _negation(
     end = toks[end_tok - 1][2] if end_tok > i else toks[i][2]
     clause = text[toks[_first_word(toks, i)][1] : end]
     until_words = text[toks[cut][2] : end].strip() if cut < end_tok else ""
+    if not until_words and (fronted := _FRONTED_UNTIL.search(text[: toks[_first_word(toks, i)][1]])):
+        until_words = fronted["ref"]  # "Until that's done, don't touch the keys": a guard, not for ever
     return Negation(start, end, ConstraintSpec(text=clause, forbid=forbid), until_words) if forbid else None
 
 

@@ -3,6 +3,10 @@ forms the grammar and check 1 read. ALFRED's tasks each take any thing of their 
 of "put one X on A, then the remaining two in B" asks for one X on A and two X in B:
 
 - "the remaining two (Xs)", "the other two", "both of the others", "both of the other Xs" -> "two other Xs";
+- "two others", "another two (Xs)", "two other sets" / "two more slices" (a measure word of the thing before:
+  "a set of keys", "a slice of apple") -> "two other Xs" ("two other sets of keys", "two more slices of
+  apple"); "the other set" / "one more set" after "two sets of keys" -> "the other set of keys" / "another
+  set of keys";
 - "the rest of the Xs", "the remaining Xs", "the rest of them", "the others" -> "all the other Xs", which
   `counts.take_every_instance` reads as what the scene holds less what the other tasks on X take; "the
   remaining X" (one) -> "the other X";
@@ -40,6 +44,17 @@ _ONE_OF = frozenset("one a an another each single".split())
 _COUNTED_OTHER = re.compile(
     rf"\b(?:the\s+(?:remaining|other)\s+(?P<n>{_N})|both\s+(?:of\s+the\s+)?other(?P<s>s)?)\b", re.I
 )
+# "two others", "two other sets", "two more slices", "another two", "a couple more", "another pair", "two more
+# of them": `n` more things of the type before (h237)
+_COUNTED_MORE = re.compile(
+    r"\b(?:(?P<n>two|three|four|2|3|4|a\s+couple)\s+(?:(?P<others>others)|(?P<kind>other|more))"
+    r"|(?:another|a\s+further)\s+(?P<n2>two|three|four|2|3|4|pair|couple))\b(?:\s+of\s+(?:them|those|these)\b)?"
+    r"(?:\s+(?P<w>[a-z]+)\b)?",
+    re.I,
+)
+# the words after "two others" that end its noun phrase: a place, a verb of placing, or the clause's end
+_AFTER_COUNT = frozenset("in into inside on onto to under at by near next go goes too also there".split())
+_SLICE_UNITS = frozenset("slices pieces".split())
 # "the rest of the (Xs)", "the rest of them", "the remaining (ones|Xs)", "the others"
 # not "before the others" / "after the rest": the other tasks (an order, `order_relations._OTHERS`; h190)
 _REST = re.compile(
@@ -87,7 +102,8 @@ _COUNT_AFTER = re.compile(
 def counted_references(text: str) -> str:
     """`text` with the counted and ordinal references above written out (a pure function of the text)."""
     text = _ONE_OF_N.sub(_count_of_those, text)
-    for rule in (_counts_after, _lamp_used, _counted_others, _rest, _other_one, _another):
+    rules = (_counts_after, _lamp_used, _counted_others, _counted_more, _other_unit)
+    for rule in (*rules, _rest, _other_one, _another):
         text = rule(text)
     return text
 
@@ -132,8 +148,14 @@ def _things(text: str) -> list[Mention]:
     toks = tokens(text)
     out = []
     for m in find_mentions(text):
-        before = [w for w, _, _ in toks[max(0, m.start - 3) : m.start] if w not in _SKIPPED]
-        place = bool(before) and before[-1] in _PLACE_WORDS
+        # the word before it, past determiners and describing words ("in the blue recycling bin"); "look at X"
+        # names a thing
+        said = [
+            i for i in range(max(0, m.start - 3), m.start)
+            if toks[i][0] in _PLACE_WORDS or (toks[i][0] not in _SKIPPED and categories(toks[i][0]))
+        ]
+        place = bool(said) and toks[said[-1]][0] in _PLACE_WORDS
+        place = place and not (toks[said[-1]][0] == "at" and toks[said[-1] - 1][0].startswith("look"))
         if not m.entry.generic and not set(m.entry.types) & LAMPS and not place:
             out.append(m)
     return out
@@ -187,6 +209,62 @@ def _counted_others(text: str) -> str:
         return _cased(f"{n} other {_plural(x)}", m[0]) if x else m[0]
 
     return _COUNTED_OTHER.sub(sub, text)
+
+
+def _counted_more(text: str) -> str:
+    """ "two others" / "another two" / "two other sets" after "a set of keys": "two other sets of keys" (the
+    measure word said, or none, names the thing before); "another two spoons": "two other spoons"."""
+
+    def sub(m: re.Match[str]) -> str:
+        n, word = (m["n"] or m["n2"]).lower(), (m["w"] or "").lower()
+        n = "two" if n in ("a couple", "pair", "couple") else n
+        rest = m[0][: m.start("w") - m.start()] if m["w"] else m[0]  # the words before the noun or place
+        noun = _noun_at(text, m.start("w")) if m["w"] else None
+        # "another two spoons": "two other spoons"; "two more hand towels" stays ("bars" may be a measure)
+        if noun is not None and noun.plural and (m["n2"] or noun.surface.lower() != word):
+            return _cased(f"{n} other", m[0]) + m[0][len(rest) - 1 :] if m["n2"] else m[0]
+        x = _antecedent(text, m.start(), one_of=False)
+        if x is None or text[m.end() :].lstrip().lower().startswith("of "):
+            return m[0]  # "two more slices of apple": said whole
+        other = _cased(f"{n} {(m['kind'] or 'other').lower()}", m[0])
+        unit = "" if word in _AFTER_COUNT else word  # a measure word said ("sets", "slices"), or none
+        if _sliced_before(text, x) and (not unit or unit in _SLICE_UNITS):
+            named = f"{unit or 'slices'} of {x.entry.phrase}"
+        elif not unit or (x.entry.phrase.split()[0] + "s" == unit and " of " in x.entry.phrase):
+            named = _plural(x)  # "two others", "two other sets" after "a set of keys"
+        else:
+            return m[0]  # "two more times"
+        return f"{other} {named}" + ("" if unit or not m["w"] else " " + m["w"])
+
+    return _COUNTED_MORE.sub(sub, text)
+
+
+_OTHER_UNIT = re.compile(
+    r"\b(?:the\s+other|one\s+more|another|a\s+(?:second|third))\s+(?P<w>[a-z]+)\b(?!\s+of\b)", re.I
+)
+
+
+def _other_unit(text: str) -> str:
+    """ "the other set" / "one more set" after "two sets of keys", "another slice" after "a slice of bread":
+    the measure word names the thing before ("the other set of keys", "another slice of bread")."""
+
+    def sub(m: re.Match[str]) -> str:
+        x, word = _antecedent(text, m.start(), one_of=True), m["w"].lower()
+        if x is None:
+            return m[0]
+        if word in ("slice", "piece") and _sliced_before(text, x):
+            return f"{m[0]} of {x.entry.phrase}"
+        unit = x.entry.phrase.split()  # "set of keys": "set" names it
+        return f"{m[0]} {' '.join(unit[1:])}" if unit[1:2] == ["of"] and unit[0] == word else m[0]
+
+    return _OTHER_UNIT.sub(sub, text)
+
+
+def _sliced_before(text: str, x: Mention) -> bool:
+    """Is the thing named as a slice ("a slice of apple", "a piece of bread", "an apple slice")?"""
+    before = [w for w, _, _ in tokens(text[: x.char_start])][-2:]
+    after = [w for w, _, _ in tokens(text[x.char_end :])][:1]
+    return bool(set(before) & {"slice", "piece", "sliced"}) or after == ["slice"]
 
 
 def _rest(text: str) -> str:

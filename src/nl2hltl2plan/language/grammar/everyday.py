@@ -39,7 +39,7 @@ from nl2hltl2plan.language.grammar.counted_refs import another_said, counted_ref
 from nl2hltl2plan.language.grammar.lamp_phrases import carried_to_lamp, items_under_lamp
 from nl2hltl2plan.language.grammar.order_phrases import dashed_first, state_on_it
 from nl2hltl2plan.language.grammar.order_remarks import remarks_said_plainly
-from nl2hltl2plan.language.grammar.repeats import repeated_for_another
+from nl2hltl2plan.language.grammar.repeats import order_word_first, repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.sentence_joins import container_again
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
@@ -271,7 +271,8 @@ def everyday(text: str) -> str:
     text = _LAMP_WITH_IT_ON.sub(r"\g<lamp>", text)  # before a repeat copies the sentence
     # "... The cup too.": the task before, for the cup (repeats.py); "carry X to the lamp and turn it on"
     # first written as the examination it is, which a repeat can copy
-    text = repeated_for_another(items_under_lamp(carried_to_lamp(state_on_it(dashed_first(text)))))
+    text = dashed_first(order_word_first(text))  # "Do the same with X after that.": "After that do ..."
+    text = repeated_for_another(items_under_lamp(carried_to_lamp(state_on_it(text))))
     text = _REFERENCE_TO_ALL.sub(_reference_sentence, text)
     text = _PAREN_FREE_ORDER.sub(", in any order", text)
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
@@ -372,8 +373,9 @@ def _destination_phrase(words: int) -> re.Pattern[str]:
     table" needs four, where "that table" is the last table named)."""
     return re.compile(
         r"(?<!next )(?<!close )\b(?P<prep>in|into|inside|on|onto|to)\s+"
-        # "on the back of the toilet": the part of a thing ("back", "top") names no place; its thing does
-        rf"(?:the\s+(?:back|top|side|edge|front|lid)\s+of\s+)?(?P<np>(?:the|a|an)(?:\s+[a-z]+){{1,{words}}})",
+        # "on the back of the toilet": a part names no place, its thing does; "to that same table" is one
+        r"(?:the\s+(?:back|top|side|edge|front|lid)\s+of\s+)?"
+        rf"(?P<np>(?:(?:the|that)(?:\s+same)?|a|an)(?:\s+[a-z]+){{1,{words}}})",
         re.I,
     )
 

@@ -32,7 +32,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import DETERMINERS, categories
-from nl2hltl2plan.language.grounding import Mention, find_mentions, tokens
+from nl2hltl2plan.language.grounding import SLICEABLE, Mention, find_mentions, tokens
 
 _DET = r"(?:the|a|an|my|your|his|her|their|our|this|that|these|those)"
 # a word of a noun phrase: no preposition, joiner or verb ("the tomato in the microwave too" says a place)
@@ -80,7 +80,7 @@ _SAME_AND = re.compile(
 # before for the bowl, with this place instead of its own
 _SAME_ELSEWHERE = re.compile(
     rf"^(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+(?P<np>{_NP})\s*,?\s*(?:but|only|except)\s+"
-    r"(?:that\s+)?(?:(?:put|place|set|leave|move|drop)\s+(?:it|(?:that|this)(?:\s+[a-z]+)?)"
+    r"(?:that\s+)?(?:(?:put|place|set|leave|move|drop|throw|toss|hang|lay|take)\s+(?:it|(?:that|this)(?:\s+[a-z]+)?)"
     r"|(?:it|(?:that|this)(?:\s+one)?)\s+goes)\s+"
     r"(?P<place>(?:in|into|on|onto|inside|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3}?)"
     r"\s*(?:instead)?\s*$",
@@ -106,6 +106,11 @@ _TASK_VERBS = frozenset(
     | {"verb_examine_in_light"}
 )
 _OPENING = _TASK_VERBS | {"verb_switch"}  # "turn on the lamp while holding the book"
+# "warm X in the microwave and toss it in Y", "chill X in the fridge ...": the appliance is passed on the way;
+# not "wash X in the sink and put it on Y", whose fragment check 1 names (test_repeats_for_another.py)
+_TREATING = frozenset({"verb_heat_place", "verb_cool_place"})
+_APPLIANCES = frozenset({"Microwave", "Fridge"})
+_SLICED_SAID = SLICEABLE - {"Egg"}  # a slice of bread, of a tomato; an egg is cracked, never "a slice of egg"
 
 
 # "do the same for a book and then a cushion", "... with the statue, and then with a plate": two repeats, the
@@ -121,9 +126,19 @@ _SAME_THEN = re.compile(
 # "..., and so does the cup", "the same goes for the cup", "likewise the cup", "ditto for the cup": "do the
 # same with the cup" (h216); "likewise X, and likewise Y" is one list ("do the same with X and Y")
 _SAME_SAID = re.compile(
-    rf"\b(?:so\s+(?:does|do)|(?:the\s+)?same\s+goes\s+for|likewise(?:\s+(?:for|with))?|ditto\s+(?:for|with))\s+(?={_DET}\s)",
+    rf"\b(?:so\s+(?:does|do)|(?:the\s+)?same\s+goes\s+for|likewise(?:\s+(?:for|with))?|ditto\s+(?:for|with)"
+    rf"|repeat(?:\s+(?:it|that|this|the\s+same))?\s+(?:with|for))\s+(?={_DET}\s)",
     re.I,
 )
+# "Do the same with a pencil after that.": the order word said last opens the sentence ("After that do the
+# same with a pencil."), as `_ORDER_LEAD` reads it (h237)
+_ORDER_LAST = re.compile(
+    r"(?P<lead>^|[.;!?]\s+)(?P<frag>(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with|to)\s+[^.;!?,]+?)"
+    r"\s*,?\s+(?P<conn>after\s+that|afterwards)(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+# "do a potato slice the same way (but put it on the table)": "do the same with a potato slice" (h237)
+_SAME_WAY = re.compile(rf"\bdo\s+(?P<np>{_NP})\s+(?:the\s+same\s+way|likewise|the\s+same)\b", re.I)
 # after a placing said with "goes" ("the cup and the pot both go on the table, and so does the knife"):
 # the things after it go there too ("..., and the knife goes on the table")
 _GOES_SO = re.compile(
@@ -162,6 +177,7 @@ def repeated_for_another(text: str) -> str:
     text = _GOES_SO.sub(_goes_there_too, text)
     text = _LIKEWISE_AGAIN.sub(lambda m: f"{m['np']} and ", text)
     text = _SAME_SAID.sub("do the same with ", text)
+    text = _SAME_WAY.sub(lambda m: f"do the same with {m['np']}", text)
     text = _SAME_THEN.sub(lambda m: f"{m['head']}. Then do the same with {m['np']}", text)
     out: list[str] = []
     task = ""  # the last sentence that is not a fragment
@@ -200,6 +216,15 @@ def repeated_for_another(text: str) -> str:
             task = _ASKED.sub("", fragment.strip())
         out.append(body)
     return "".join(out) if written else text
+
+
+def order_word_first(text: str) -> str:
+    """ "Do the same with a pencil after that." -> "After that do the same with a pencil." (before the lamp
+    phrases and the repeats read it)."""
+    def first(m: re.Match[str]) -> str:
+        return f"{m['lead']}{m['conn'].capitalize()} {m['frag'][:1].lower()}{m['frag'][1:]}"
+
+    return _ORDER_LAST.sub(first, text)
 
 
 def _goes_there_too(m: re.Match[str]) -> str:
@@ -276,7 +301,8 @@ def _elsewhere(task: str, fragment: str) -> str | None:
     sentence for the bowl, its last place replaced by this one (lower case); None where it is no such pair."""
     m = _SAME_ELSEWHERE.match(fragment.strip())
     things = [x for x in find_mentions(m["np"]) if not x.entry.generic] if m else []
-    copy = _with_thing(task, things[0], inside=True, container=True) if m and len(things) == 1 else None
+    words = _phrase(m["np"], things[0]) if m and len(things) == 1 else ""  # "a slice of lettuce" whole
+    copy = _with_thing(task, things[0], True, True, words) if m and len(things) == 1 else None
     if not copy or not m:
         return None
     toks = tokens(copy)
@@ -348,13 +374,17 @@ def _with_thing(
     # no word between a determiner and its thing but a slice's ("a slice of tomato")
     direct = all(all(_slice_word(toks, j) for j in range(_det_at(m, toks) + 1, m.start)) for m in named)
     kept = [m for m, role in zip(named, roles, strict=True) if role != "source"]  # "from the sink": left out
+    if categories(toks[0][0]) & _TREATING and len(kept) == 3:
+        kept = [m for m in kept if not (m is not kept[-1] and set(m.entry.types) & _APPLIANCES)]
     if not inside and (len(kept) != 2 or kept[0] is not firsts[0] or not direct):
         return None
     for i, (word, _, _) in enumerate(toks):
         if i not in said and word not in plain and not categories(word) & opening:
             return None
     # the thing (with the words between its determiner and it) replaced, a source ("from the shelf") left out
-    spans = [(toks[_after_det(m, toks, _sliced(words))][1], m.char_end, words) for m in firsts]
+    # "a slice of bread ... repeat with a pot": a pot is no slice, the slice words go with the bread (h237)
+    whole = _sliced(words) or not set(thing.entry.types) & _SLICED_SAID
+    spans = [(toks[_after_det(m, toks, whole)][1], m.char_end, words) for m in firsts]
     sources = [m for m, role in zip(named, roles, strict=True) if role == "source"]
     spans += [(toks[_det_at(m, toks) - 1][1] - 1, m.char_end, "") for m in sources]
     for start, end, new in sorted(spans, reverse=True):
