@@ -86,14 +86,21 @@ def own_clause(k: int, tasks: Tasks, text: str) -> bool:
     return end >= 0 and "," in between and _ADDITIVE.match(between) is None
 
 
+_ADDED_LAST = re.compile(rf"\b{phrase_list_pattern('order_scope.txt', 'added_last')}\W*$", re.I)
+
+
 def said_for_an_earlier_clause(marker: tuple[str, str], k: int, tasks: Tasks, text: str) -> bool:
     """Is a sentence's leading marker on unit `k` one that an earlier clause of the sentence carries (it was
-    said once, before that clause), with no "then" of its own joining `k`? Not where the sentence groups its
-    clauses by leaving their order open ("Then B and C in any order": both after, the benchmark's form), nor
-    where `k` is not a clause of its own (`own_clause`)."""
+    said once, before that clause), and `k` a clause of its own (`own_clause`) that adds one more task
+    ("X. Then B, and C too.": C's clause has no order word, ANNOTATION_GUIDE.md)? Otherwise the marker
+    opens the whole sentence ("After that Y" -> [previous task, Y], Y all it introduces: "X. After that,
+    B, and C." orders B and C after X), as where the sentence leaves its clauses' order open ("Then B and C
+    in any order": both after, the benchmark's form)."""
     units = tasks.units
     u = units[k]
     if u.seq_after_prev or leaves_order_open(u, text) or not own_clause(k, tasks, text):
+        return False
+    if not _ADDED_LAST.search(tasks.specs[u.tasks[-1]].text):
         return False
     return any(v.sentence == u.sentence and marker in v.markers for v in units[:k])
 
