@@ -20,8 +20,17 @@ _THING = r"(?:[a-z][a-z']*(?:\s+[a-z][a-z']*){0,3}?)"
 _NOT_IN_THING = frozenset(
     "in on into onto to from under at by with for till until then and or it them you your i we is are be not "
     "don't can wait save leave keep may might could should must will would either any whichever each every "
-    "neither step steps order only just right but which what matter doesn't does".split()
+    "neither step steps order only just right but which what matter doesn't does else rest others everything "
+    "anything".split()
 )
+# every other task ("Everything else before the apple", "The lamp ones can wait until the rest is done")
+_REST = (
+    r"(?:the\s+rest|(?:everything|anything)\s+else|(?:all\s+)?the\s+others|the\s+other\s+(?:ones|two|three)|"
+    r"all\s+of\s+them|all\s+that|both(?:\s+of\s+them)?)"
+)
+_DONE = r"(?:is|are|has\s+been|have\s+been)\s+(?:done|finished|complete|completed|over)"
+# the treatments whose verb may open a remark ("Rinse the soap before anything else.")
+_TREATING = frozenset({"clean", "heat", "cool"})
 _PARTS = re.compile(r"\s*(?:,\s*(?:but|and)\s+|,|;|\s+but\s+)\s*", re.I)
 
 Relation = tuple[str, str, str]  # (kind, a, b); "free": a is "first" / "last", b the count
@@ -35,6 +44,7 @@ def _patterns() -> list[tuple[str, re.Pattern[str]]]:
             continue
         kind, pattern = line.split(":", 1)
         body = pattern.strip().replace("{x}", rf"(?P<x>{_THING})").replace("{y}", rf"(?P<y>{_THING})")
+        body = body.replace("{v}", r"(?P<v>[a-z]+(?:\s+up)?)").replace("{rest}", _REST).replace("{done}", _DONE)
         out.append((kind.strip(), re.compile(rf"^{body}$", re.I)))
     return out
 
@@ -56,8 +66,10 @@ def _part(part: str) -> Relation | None:
             return kind, said["pos"].lower(), said["n"].lower()
         if kind == "rest":
             return kind, "", ""
+        if (verb := said.get("v")) is not None and G.VERBS.get(verb.split()[0].lower(), ("",))[0] not in _TREATING:
+            continue  # "put the mug first" is a clause (no thing is named by a place verb alone)
         if _a_thing(said.get("x")) and (kind != "before" or _a_thing(said.get("y"))):
-            return kind, said["x"], said.get("y") or ""
+            return kind, f"{verb} {said['x']}" if verb else said["x"], said.get("y") or ""
     return None
 
 
