@@ -45,3 +45,10 @@ def test_near_miss_a_treatment_no_task_has_is_no_order():
     refusal), never an order for the bread's task."""
     tasks, said, unread = read(f"{TASKS} Heat the bread first.")
     assert unread and not any(BREAD == b for _, b in said)
+
+
+def test_throw_it_out_in_the_bin_at_the_end():
+    """ "throw it out in the bin": "out" the particle, as "away" (before: no destination for the tomato)."""
+    tasks, said, unread = read("Put the mug in the sink. Chill the tomato and throw it out in the bin at the end.")
+    assert tasks == ["place Mug -> SinkBasin", "cool_place Tomato -> GarbageCan"] and not unread
+    assert said == {("place Mug -> SinkBasin", "cool_place Tomato -> GarbageCan")}
