@@ -82,8 +82,22 @@ def order_remark(sentence: str) -> list[Relation] | None:
     >>> order_remark("Put the mug in the sink first") is None
     True
     """
-    read = _read(sentence)
+    said = _SAID_PLAINLY.get(sentence.strip(" .!"))
+    read = said if said is not None else _read(sentence)
     return None if read is None else sorted((r for r, _ in read), key=lambda r: r[0] == "free")
+
+
+# the remarks `remarks_said_plainly` wrote, by the plain sentence, with what it read in them: the rules'
+# step (`sentences.read_sentences`, on the normalised text, a string) takes them from here, not parsing them
+# again; a sentence a later rewrite changed is not here and is parsed (the same relations: `_plain`)
+_SAID_PLAINLY: dict[str, list[tuple[Relation, str]]] = {}
+_SAID_PLAINLY_MAX = 4096
+
+
+def _said_plainly(plain: str, read: list[tuple[Relation, str]]) -> None:
+    if len(_SAID_PLAINLY) >= _SAID_PLAINLY_MAX:
+        _SAID_PLAINLY.clear()
+    _SAID_PLAINLY[plain.strip(" .!")] = read
 
 
 def _read(sentence: str) -> list[tuple[Relation, str]] | None:
@@ -131,8 +145,11 @@ def remarks_said_plainly(text: str) -> str:
         if read is not None and (ends or any(k != "rest" for (k, _, _), _ in read)):
             body = said.rstrip(".;!? ")
             lead, end = body[: len(body) - len(body.lstrip())], said[len(body) :]
-            plain = ", ".join(s for (k, a, _), p in read if (s := _plain(k, a, p)))
+            read = [(r, s) for r, p in read if (s := _plain(r[0], r[1], p))]
+            plain = ", ".join(s for _, s in read)
             said = lead + plain + end if plain else ""
+        if read:
+            _said_plainly(said, read)
         out.append(head + said)
     return "".join(out)
 
