@@ -60,12 +60,13 @@ def relate(
     # "A and B in any order, and finally C": "finally" comes after no task whose order is left open
     # (ANNOTATION_GUIDE.md), as with "A and B in any order. Finally C."
     loose = free | _any_order_steps(tasks, steps)
+    said = [sentence for sentence, _ in split_sentences(text)]  # once, for every unit's sentence
     for k in range(len(tasks.units)):
         _added_after_before_sentence(k, tasks.units, tasks, text, b)
         _added_to_free(k, tasks, text, b)
         _then_also(k, tasks, text, b)
-        _marker_edges(k, tasks, (free, loose), b, text, edges)
-        _step_edges(k, tasks, steps, free, edges, text)
+        _marker_edges(k, tasks, (free, loose), b, (text, said), edges)
+        _step_edges(k, tasks, steps, free, edges, (text, said))
     _first_edges(tasks.units, steps, free, edges)
     _leading_last(tasks.units, steps, free, edges)
     if why := first_said_unread(tasks.units, text):  # "First A, first B": which one is first?
@@ -116,11 +117,18 @@ _THEN_NEXT = re.compile(r"\s*,?\s*(?:and\s+)?then\b", re.I)
 
 
 def _marker_edges(
-    k: int, tasks: Tasks, frees: tuple[set[int], set[int]], b: TaskBuilder, text: str, edges: Edges
+    k: int,
+    tasks: Tasks,
+    frees: tuple[set[int], set[int]],
+    b: TaskBuilder,
+    said: tuple[str, list[str]],
+    edges: Edges,
 ) -> None:
     """The edges that the markers of unit `k` state ("Then", "Finally", "after all that", "before that");
-    `frees`: the tasks allowed at any time, and those with the tasks whose order is left open."""
+    `frees`: the tasks allowed at any time, and those with the tasks whose order is left open; `said`: the
+    text and its sentences."""
     free, loose = frees
+    text, sentences = said
     units = tasks.units
     u = units[k]
     prev = units[k - 1] if k > 0 else None
@@ -133,7 +141,7 @@ def _marker_edges(
     earlier = [t for t in range(len(tasks.specs)) if t < first_of_sentence]
     others = [t for t in range(len(tasks.specs)) if t not in u.tasks]
     for kind, ref in u.markers:
-        if kind == G.THEN and said_for_an_earlier_clause((kind, ref), k, tasks, text):
+        if kind == G.THEN and said_for_an_earlier_clause((kind, ref), k, tasks, text, sentences):
             continue  # "A. Then B, and C too.": "then" opens B's clause, C's has no order word (the guide)
         if kind == G.THEN and prev is not None:
             after = [] if prev.sentence == u.sentence else _last_step(units, prev.sentence, free, edges, text)
@@ -209,7 +217,9 @@ def _with_stated(scope: list[int], tasks: Tasks, edges: Edges) -> list[int]:
     return scope + stated
 
 
-def _step_edges(k: int, tasks: Tasks, steps: list[int], free: set[int], edges: Edges, text: str) -> None:
+def _step_edges(
+    k: int, tasks: Tasks, steps: list[int], free: set[int], edges: Edges, said: tuple[str, list[str]]
+) -> None:
     """ "A and B, then C": unit `k` after the step before its own, inside one sentence: after every task of
     that step that no word lets happen at any time ("A at any time and B, then C": after B; after the
     last clause when every task is so and "then" joins them)."""
@@ -220,7 +230,8 @@ def _step_edges(k: int, tasks: Tasks, steps: list[int], free: set[int], edges: E
     if (G.FINALLY, IN_SENTENCE) in units[opener].markers:  # "finally" states its own order
         return
     # "A, then B, and C too": C's clause has no order word (ANNOTATION_GUIDE.md)
-    apart = own_clause(k, tasks, text) and not leaves_order_open(u, text)
+    text, sentences = said
+    apart = own_clause(k, tasks, text) and not leaves_order_open(u, sentences)
     if k != opener and (apart or any(t in free for t in u.tasks)):
         return
     before = [t for t in clause_before(tasks, steps, opener, text) if t not in free] or [

@@ -9,7 +9,6 @@ from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import Tasks, Unit
 from nl2hltl2plan.language.grammar.frames import IN_SENTENCE
-from nl2hltl2plan.language.grammar.sentences import split_sentences
 
 # "in any order" / "order doesn't matter" said of a sentence: its clauses are one group
 ANY_ORDER = re.compile(r"\b(?:any|either|whatever|no\s+particular)\s+order\b", re.I)
@@ -89,7 +88,9 @@ def own_clause(k: int, tasks: Tasks, text: str) -> bool:
 _ADDED_LAST = re.compile(rf"\b{phrase_list_pattern('order_scope.txt', 'added_last')}\W*$", re.I)
 
 
-def said_for_an_earlier_clause(marker: tuple[str, str], k: int, tasks: Tasks, text: str) -> bool:
+def said_for_an_earlier_clause(
+    marker: tuple[str, str], k: int, tasks: Tasks, text: str, sentences: list[str]
+) -> bool:
     """Is a sentence's leading marker on unit `k` one that an earlier clause of the sentence carries (it was
     said once, before that clause), and `k` a clause of its own (`own_clause`) that adds one more task
     ("X. Then B, and C too.": C's clause has no order word, ANNOTATION_GUIDE.md)? Otherwise the marker
@@ -98,14 +99,15 @@ def said_for_an_earlier_clause(marker: tuple[str, str], k: int, tasks: Tasks, te
     in any order": both after, the benchmark's form)."""
     units = tasks.units
     u = units[k]
-    if u.seq_after_prev or leaves_order_open(u, text) or not own_clause(k, tasks, text):
+    if u.seq_after_prev or leaves_order_open(u, sentences) or not own_clause(k, tasks, text):
         return False
     if not _ADDED_LAST.search(tasks.specs[u.tasks[-1]].text):
         return False
     return any(v.sentence == u.sentence and marker in v.markers for v in units[:k])
 
 
-def leaves_order_open(u: Unit, text: str) -> bool:
-    """Does `u`'s sentence say "in any order" / "order doesn't matter" (one group: "then" is for all)?"""
-    said = sentences[u.sentence][0] if u.sentence < len(sentences := split_sentences(text)) else ""
+def leaves_order_open(u: Unit, sentences: list[str]) -> bool:
+    """Does `u`'s sentence (of the instruction's `sentences`, `split_sentences` once for all its units) say
+    "in any order" / "order doesn't matter" (one group: "then" is for all)?"""
+    said = sentences[u.sentence] if u.sentence < len(sentences) else ""
     return ANY_ORDER.search(said) is not None or _ORDER_FREE.search(said) is not None
