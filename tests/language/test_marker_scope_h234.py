@@ -21,20 +21,20 @@ BREAD = "place Bread -> CounterTop"
     [
         # before h234: the egg unordered (only the first clause after the marker was ordered)
         (
-            "Put the apple in the fridge. When done, put the mug in the sink, and heat the egg and put it in the "
-            "microwave.",
+            "Put the apple in the fridge. When done, put the mug in the sink, and heat the egg and put it in "
+            "the microwave.",
             {(APPLE, MUG), (APPLE, HOT_EGG)},
         ),
         # three clauses under one marker (before: only the mug after the apple)
         (
-            "Put the apple in the fridge. Afterwards, put the mug in the sink, heat the egg and put it in the "
-            "microwave, and put the bread on the counter.",
+            "Put the apple in the fridge. Afterwards, put the mug in the sink, heat the egg and put it in "
+            "the microwave, and put the bread on the counter.",
             {(APPLE, MUG), (APPLE, HOT_EGG), (APPLE, BREAD)},
         ),
         # near miss: a closing "too" adds a task the marker does not order (as h213 read it)
         (
-            "Put the apple in the fridge. After that, put the mug in the sink, and heat the egg and put it in the "
-            "microwave too.",
+            "Put the apple in the fridge. After that, put the mug in the sink, and heat the egg and put it "
+            "in the microwave too.",
             {(APPLE, MUG)},
         ),
     ],

@@ -33,8 +33,8 @@ def test_an_order_remark_in_other_words(remark, order):
 def test_a_task_after_both_said_with_when():
     """ "Y when both are finished" as "Y once both are done" (before: 'when' unread)."""
     tasks, said, unread = read(
-        "Heat the egg and put it in the fridge, and rinse the mug and put it in the sink. Put the bread on the "
-        "counter when both are finished."
+        "Heat the egg and put it in the fridge, and rinse the mug and put it in the sink. Put the bread on "
+        "the counter when both are finished."
     )
     egg = "heat_place Egg -> Fridge"
     assert said == {(egg, BREAD), (CLEAN_MUG, BREAD)} and not unread
@@ -49,6 +49,7 @@ def test_near_miss_a_treatment_no_task_has_is_no_order():
 
 def test_throw_it_out_in_the_bin_at_the_end():
     """ "throw it out in the bin": "out" the particle, as "away" (before: no destination for the tomato)."""
-    tasks, said, unread = read("Put the mug in the sink. Chill the tomato and throw it out in the bin at the end.")
+    text = "Put the mug in the sink. Chill the tomato and throw it out in the bin at the end."
+    tasks, said, unread = read(text)
     assert tasks == ["place Mug -> SinkBasin", "cool_place Tomato -> GarbageCan"] and not unread
     assert said == {("place Mug -> SinkBasin", "cool_place Tomato -> GarbageCan")}

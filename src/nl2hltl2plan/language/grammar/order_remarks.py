@@ -44,7 +44,8 @@ def _patterns() -> list[tuple[str, re.Pattern[str]]]:
             continue
         kind, pattern = line.split(":", 1)
         body = pattern.strip().replace("{x}", rf"(?P<x>{_THING})").replace("{y}", rf"(?P<y>{_THING})")
-        body = body.replace("{v}", r"(?P<v>[a-z]+(?:\s+up)?)").replace("{rest}", _REST).replace("{done}", _DONE)
+        body = body.replace("{v}", r"(?P<v>[a-z]+(?:\s+up)?)").replace("{rest}", _REST)
+        body = body.replace("{done}", _DONE)
         out.append((kind.strip(), re.compile(rf"^{body}$", re.I)))
     return out
 
@@ -66,7 +67,8 @@ def _part(part: str) -> Relation | None:
             return kind, said["pos"].lower(), said["n"].lower()
         if kind == "rest":
             return kind, "", ""
-        if (verb := said.get("v")) is not None and G.VERBS.get(verb.split()[0].lower(), ("",))[0] not in _TREATING:
+        verb = said.get("v")
+        if verb is not None and G.VERBS.get(verb.split()[0].lower(), ("",))[0] not in _TREATING:
             continue  # "put the mug first" is a clause (no thing is named by a place verb alone)
         if _a_thing(said.get("x")) and (kind != "before" or _a_thing(said.get("y"))):
             return kind, f"{verb} {said['x']}" if verb else said["x"], said.get("y") or ""
