@@ -60,13 +60,13 @@ def relate(
     # "A and B in any order, and finally C": "finally" comes after no task whose order is left open
     # (ANNOTATION_GUIDE.md), as with "A and B in any order. Finally C."
     loose = free | _any_order_steps(tasks, steps)
-    said = [sentence for sentence, _ in split_sentences(text)]  # once, for every unit's sentence
+    written = (text, [sentence for sentence, _ in split_sentences(text)])  # split once, for every unit
     for k in range(len(tasks.units)):
         _added_after_before_sentence(k, tasks.units, tasks, text, b)
         _added_to_free(k, tasks, text, b)
         _then_also(k, tasks, text, b)
-        _marker_edges(k, tasks, (free, loose), b, (text, said), edges)
-        _step_edges(k, tasks, steps, free, edges, (text, said))
+        _marker_edges(k, tasks, (free, loose), b, written, edges)
+        _step_edges(k, tasks, steps, free, edges, written)
     _first_edges(tasks.units, steps, free, edges)
     _leading_last(tasks.units, steps, free, edges)
     if why := first_said_unread(tasks.units, text):  # "First A, first B": which one is first?
@@ -121,14 +121,14 @@ def _marker_edges(
     tasks: Tasks,
     frees: tuple[set[int], set[int]],
     b: TaskBuilder,
-    said: tuple[str, list[str]],
+    written: tuple[str, list[str]],
     edges: Edges,
 ) -> None:
     """The edges that the markers of unit `k` state ("Then", "Finally", "after all that", "before that");
-    `frees`: the tasks allowed at any time, and those with the tasks whose order is left open; `said`: the
-    text and its sentences."""
+    `frees`: the tasks allowed at any time, and those with the tasks whose order is left open; `written`:
+    the text and its sentences."""
     free, loose = frees
-    text, sentences = said
+    text, sentences = written
     units = tasks.units
     u = units[k]
     prev = units[k - 1] if k > 0 else None
@@ -218,7 +218,7 @@ def _with_stated(scope: list[int], tasks: Tasks, edges: Edges) -> list[int]:
 
 
 def _step_edges(
-    k: int, tasks: Tasks, steps: list[int], free: set[int], edges: Edges, said: tuple[str, list[str]]
+    k: int, tasks: Tasks, steps: list[int], free: set[int], edges: Edges, written: tuple[str, list[str]]
 ) -> None:
     """ "A and B, then C": unit `k` after the step before its own, inside one sentence: after every task of
     that step that no word lets happen at any time ("A at any time and B, then C": after B; after the
@@ -230,7 +230,7 @@ def _step_edges(
     if (G.FINALLY, IN_SENTENCE) in units[opener].markers:  # "finally" states its own order
         return
     # "A, then B, and C too": C's clause has no order word (ANNOTATION_GUIDE.md)
-    text, sentences = said
+    text, sentences = written
     apart = own_clause(k, tasks, text) and not leaves_order_open(u, sentences)
     if k != opener and (apart or any(t in free for t in u.tasks)):
         return
