@@ -2,7 +2,7 @@
 "Next Y", "Afterwards Y", "After that Y" with no named referent -> [previous task, Y]; a marker set off at the
 head of a sentence introduces the whole sentence, so every clause of it is after the previous task ("A. After
 that, B, and C." -> A<B, A<C). A clause closed by "too" adds one more task with no order word of its own
-(h213's class: "A. Then B, and C too." -> A<B only)."""
+(h213's class: "A. After that, B, and C too." -> A<B only), and a bare "Then" opens its first clause only."""
 
 from __future__ import annotations
 
@@ -35,6 +35,13 @@ BREAD = "place Bread -> CounterTop"
         (
             "Put the apple in the fridge. After that, put the mug in the sink, and heat the egg and put it "
             "in the microwave too.",
+            {(APPLE, MUG)},
+        ),
+        # near miss: a bare "Then" opens its first clause only (the committed sets' truths, paper_h166held,
+        # paper_h170dev / held: "X. Then B, C, and D." -> [X, B])
+        (
+            "Put the apple in the fridge. Then put the mug in the sink, and heat the egg and put it in the "
+            "microwave.",
             {(APPLE, MUG)},
         ),
     ],

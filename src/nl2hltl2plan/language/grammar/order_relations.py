@@ -128,7 +128,7 @@ def _marker_edges(
     `frees`: the tasks allowed at any time, and those with the tasks whose order is left open; `written`:
     the text and its sentences."""
     free, loose = frees
-    text, sentences = written
+    text = written[0]
     units = tasks.units
     u = units[k]
     prev = units[k - 1] if k > 0 else None
@@ -141,8 +141,9 @@ def _marker_edges(
     earlier = [t for t in range(len(tasks.specs)) if t < first_of_sentence]
     others = [t for t in range(len(tasks.specs)) if t not in u.tasks]
     for kind, ref in u.markers:
-        if kind == G.THEN and said_for_an_earlier_clause((kind, ref), k, tasks, text, sentences):
-            continue  # "A. Then B, and C too.": "then" opens B's clause, C's has no order word (the guide)
+        freed = all(t in free for t in u.tasks)
+        if kind == G.THEN and said_for_an_earlier_clause((kind, ref), k, tasks, written, freed):
+            continue  # "A. Then B, and C.": "then" opens B's clause, C's has no order word (the guide)
         if kind == G.THEN and prev is not None:
             after = [] if prev.sentence == u.sentence else _last_step(units, prev.sentence, free, edges, text)
             after = (after or _unfreed_clause(units, prev, free)) + _put_before(units, prev, free)

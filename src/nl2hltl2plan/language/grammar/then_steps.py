@@ -86,22 +86,28 @@ def own_clause(k: int, tasks: Tasks, text: str) -> bool:
 
 
 _ADDED_LAST = re.compile(rf"\b{phrase_list_pattern('order_scope.txt', 'added_last')}\W*$", re.I)
+# a sentence that opens with "then" and no comma: "then" opens its first clause only (the committed sets'
+# truths: "X. Then B, C, and D." -> [X, B]); "After that, B, and C." sets the marker apart: the sentence
+_BARE_THEN = re.compile(r"^\W*(?:and\s+)?then\b(?!\s*,)", re.I)
 
 
 def said_for_an_earlier_clause(
-    marker: tuple[str, str], k: int, tasks: Tasks, text: str, sentences: list[str]
+    marker: tuple[str, str], k: int, tasks: Tasks, written: tuple[str, list[str]], freed: bool
 ) -> bool:
     """Is a sentence's leading marker on unit `k` one that an earlier clause of the sentence carries (it was
-    said once, before that clause), and `k` a clause of its own (`own_clause`) that adds one more task
-    ("X. Then B, and C too.": C's clause has no order word, ANNOTATION_GUIDE.md)? Otherwise the marker
-    opens the whole sentence ("After that Y" -> [previous task, Y], Y all it introduces: "X. After that,
-    B, and C." orders B and C after X), as where the sentence leaves its clauses' order open ("Then B and C
-    in any order": both after, the benchmark's form)."""
+    said once, before that clause), and `k` a clause of its own (`own_clause`) outside the marker's scope:
+    after a bare "Then" ("X. Then B, and C." -> [X, B]: C's clause has no order word, ANNOTATION_GUIDE.md),
+    one that adds a task ("..., and C too"), or one its own words free (`freed`: "..., and C whenever")?
+    Otherwise a marker set apart by a comma opens the whole sentence ("After that Y" -> [previous task, Y],
+    Y all it introduces: "X. After that, B, and C." orders B and C after X), as where the sentence leaves
+    its clauses' order open ("Then B and C in any order": both after, the benchmark's form)."""
+    text, sentences = written
     units = tasks.units
     u = units[k]
     if u.seq_after_prev or leaves_order_open(u, sentences) or not own_clause(k, tasks, text):
         return False
-    if not _ADDED_LAST.search(tasks.specs[u.tasks[-1]].text):
+    said = sentences[u.sentence] if u.sentence < len(sentences) else ""
+    if not (freed or _BARE_THEN.match(said) or _ADDED_LAST.search(tasks.specs[u.tasks[-1]].text)):
         return False
     return any(v.sentence == u.sentence and marker in v.markers for v in units[:k])
 
