@@ -311,6 +311,9 @@ KNOWN_WRONG: set[str] = {
     # after a placing moves the apple to the sink; a negation's "it" forbids every placing of the apple
     "put the apple in the fridge two in the sink",
     "put the egg in the fridge don't put the apple in it",
+    # h234's held-out remarks (scored once): the order is read; "the knife" of FloorPlan26 read as ButterKnife
+    "Wash the knife and put it on the dining table, chill the lettuce and put it on the dining table, and "
+    "warm up the mug and put it on the coffee machine. Do the lettuce once the others are finished.",
 }
 
 
