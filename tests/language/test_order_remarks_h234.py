@@ -53,3 +53,10 @@ def test_throw_it_out_in_the_bin_at_the_end():
     tasks, said, unread = read(text)
     assert tasks == ["place Mug -> SinkBasin", "cool_place Tomato -> GarbageCan"] and not unread
     assert said == {("place Mug -> SinkBasin", "cool_place Tomato -> GarbageCan")}
+
+
+def test_near_miss_a_thing_named_nowhere_before_whenever_is_the_task_before_for_it():
+    """ "A, then B. The bread whenever.": no bread said before, so no remark: the task before, for it."""
+    text = "Put the apple in the fridge, then rinse the mug and put it in the sink. The bread whenever."
+    tasks, said, unread = read(text)
+    assert tasks[:2] == [APPLE, CLEAN_MUG] and len(tasks) == 3 and "Bread" in tasks[2] and not unread

@@ -75,9 +75,10 @@ def _part(part: str) -> Relation | None:
     return None
 
 
-def order_remark(sentence: str) -> list[Relation] | None:
+def order_remark(sentence: str, before: str | None = None) -> list[Relation] | None:
     """The relations of a sentence that only says the order of tasks named elsewhere, free ones last (they
-    are checked against the edges the others give); None where any part says something else.
+    are checked against the edges the others give); None where any part says something else. `before`: the
+    text before the sentence, where a thing said to be done at any time must be named (`_read`).
 
     >>> order_remark("Soap bottles first, toilet paper last")
     [('first', 'Soap bottles', ''), ('last', 'toilet paper', '')]
@@ -85,13 +86,14 @@ def order_remark(sentence: str) -> list[Relation] | None:
     True
     """
     said = _SAID_PLAINLY.get(sentence.strip(" .!"))
-    read = said if said is not None else _read(sentence)
+    read = said if said is not None else _read(sentence, before)
     return None if read is None else sorted((r for r, _ in read), key=lambda r: r[0] == "free")
 
 
 # the remarks `remarks_said_plainly` wrote, by the plain sentence, with what it read in them: the rules'
 # step (`sentences.read_sentences`, on the normalised text, a string) takes them from here, not parsing them
-# again; a sentence a later rewrite changed is not here and is parsed (the same relations: `_plain`)
+# again; a sentence a later rewrite changed is not here and is parsed (the same relations: `_plain`). Only
+# what the sentence alone decides is kept (not "X whenever", which needs X named before it).
 _SAID_PLAINLY: dict[str, list[tuple[Relation, str]]] = {}
 _SAID_PLAINLY_MAX = 4096
 
@@ -102,15 +104,27 @@ def _said_plainly(plain: str, read: list[tuple[Relation, str]]) -> None:
     _SAID_PLAINLY[plain.strip(" .!")] = read
 
 
-def _read(sentence: str) -> list[tuple[Relation, str]] | None:
-    """Each part of a remark sentence with its relation, in the order said; None: no remark."""
+def _read(sentence: str, before: str | None = None) -> list[tuple[Relation, str]] | None:
+    """Each part of a remark sentence with its relation, in the order said; None: no remark. "The CD
+    whenever." where no CD is named `before` is no remark: it is the task before, for the CD (`repeats`)."""
     parts = [p.strip(" .!") for p in _PARTS.split(sentence.strip(" .!")) if p.strip(" .!")]
     read = [(_part(p), p) for p in parts if not _COURTESY.match(p)]
     if not read or any(r is None for r, _ in read):
         return None
     if len(read) > 1 and all(r[0] == "rest" for r, _ in read if r is not None):
         return None
+    if before is not None and any(r[0] == "any" and not _named_before(r[1], before) for r, _ in read if r):
+        return None
     return [(r, p) for r, p in read if r is not None]
+
+
+_NAMING = frozenset("the a an that this one ones job jobs task tasks stuff".split())
+
+
+def _named_before(thing: str, before: str) -> bool:
+    """Is a word of `thing` (its name, not "the" / "ones") in the text before, a plural's stem too?"""
+    words = [w for w in thing.lower().split() if w not in _NAMING]
+    return any(re.search(rf"\b{re.escape(w[:-1] if w.endswith('s') else w)}", before, re.I) for w in words)
 
 
 _SENTENCE = re.compile(r"[^.;!?]+[.;!?]*\s*")
@@ -137,7 +151,7 @@ def remarks_said_plainly(text: str) -> str:
     'Put A on B. the spray bottle first; '
     """
     text = _LAST_CLAUSE_ELSE.sub(lambda m: ". " if m["verb"].lower() in G.VERBS else m[0], text)
-    spans = [(m, _read(m[0].rstrip(".;!? "))) for m in _SENTENCE.finditer(text)]
+    spans = [(m, _read(m[0].rstrip(".;!? "), text[: m.start()])) for m in _SENTENCE.finditer(text)]
     ends = any(r is not None and any(k in ("first", "last") for (k, _, _), _ in r) for _, r in spans)
     out = []
     for m, read in spans:
@@ -150,7 +164,7 @@ def remarks_said_plainly(text: str) -> str:
             read = [(r, s) for r, p in read if (s := _plain(r[0], r[1], p))]
             plain = ", ".join(s for _, s in read)
             said = lead + plain + end if plain else ""
-        if read:
+        if read and all(r[0] != "any" for r, _ in read):  # "any" hangs on the text before: parsed in place
             _said_plainly(said, read)
         out.append(head + said)
     return "".join(out)
