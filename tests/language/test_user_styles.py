@@ -344,6 +344,9 @@ KNOWN_WRONG: set[str] = {
     # h237's held-out: "after that" inside a repeat's fragment, before its "but ..." place, orders nothing
     "Heat a slice of bread and put it in the fridge. Do the same with an egg after that, but leave it on the "
     "counter.",
+    # h234's held-out remarks (scored once): the order is read; "the knife" of FloorPlan26 read as ButterKnife
+    "Wash the knife and put it on the dining table, chill the lettuce and put it on the dining table, and "
+    "warm up the mug and put it on the coffee machine. Do the lettuce once the others are finished.",
 }
 
 

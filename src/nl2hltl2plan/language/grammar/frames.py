@@ -10,6 +10,8 @@ from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.phrases import COLOURS, DETERMINERS, NP, match_prep, parse_np, tokens
 from nl2hltl2plan.language.grounding import find_mentions
 
+_AFTER_OUT = frozenset({",", "and", "in", "into", "to"})  # "throw it out" then: its particle, not "out of"
+
 
 @dataclass
 class Item:
@@ -180,8 +182,8 @@ class _ItemReader:
                     self.item = Item(obj=None, added="plus" in {w, nxt})  # ", plus the mug"
                 self.cur_prep = None
             return i + 1
-        if self.cls == "trash" and w == "out" and (i + 1 >= len(words) or words[i + 1] in {",", "and"}):
-            self._flush()  # "throw it out": the particle, as "away" is (not "out of the fridge")
+        if self.cls == "trash" and w == "out" and (i + 1 >= len(words) or words[i + 1] in _AFTER_OUT):
+            self._flush()  # "throw it out (in the bin)": the particle, as "away" is (not "out of the fridge")
             self.cur_prep = None
             return i + 1
         if self.light_on and w in {"on", "off"} and _particle_position(words, i):

@@ -61,11 +61,12 @@ def relate(
     # "A and B in any order, and finally C": "finally" comes after no task whose order is left open
     # (ANNOTATION_GUIDE.md), as with "A and B in any order. Finally C."
     loose = free | _any_order_steps(tasks, steps)
+    written = (text, [sentence for sentence, _ in split_sentences(text)])  # split once, for every unit
     for k in range(len(tasks.units)):
         _added_to_free(k, tasks, text, b)
         _then_also(k, tasks, text, b)
-        _marker_edges(k, tasks, (free, loose), b, text, edges)
-        _step_edges(k, tasks, steps, free, edges, text)
+        _marker_edges(k, tasks, (free, loose), b, written, edges)
+        _step_edges(k, tasks, steps, free, edges, written)
     if not _freed_by_a_remark(tasks.units, text):  # "First, A, B and C. Do these in any order."
         _first_edges(tasks.units, steps, loose, edges)  # not before a task whose order is left open
     _leading_last(tasks.units, steps, free, edges)
@@ -117,11 +118,18 @@ _THEN_NEXT = re.compile(r"\s*,?\s*(?:and\s+)?then\b", re.I)
 
 
 def _marker_edges(
-    k: int, tasks: Tasks, frees: tuple[set[int], set[int]], b: TaskBuilder, text: str, edges: Edges
+    k: int,
+    tasks: Tasks,
+    frees: tuple[set[int], set[int]],
+    b: TaskBuilder,
+    written: tuple[str, list[str]],
+    edges: Edges,
 ) -> None:
     """The edges that the markers of unit `k` state ("Then", "Finally", "after all that", "before that");
-    `frees`: the tasks allowed at any time, and those with the tasks whose order is left open."""
+    `frees`: the tasks allowed at any time, and those with the tasks whose order is left open; `written`:
+    the text and its sentences."""
     free, loose = frees
+    text = written[0]
     units = tasks.units
     u = units[k]
     prev = units[k - 1] if k > 0 else None
@@ -134,8 +142,9 @@ def _marker_edges(
     earlier = [t for t in range(len(tasks.specs)) if t < first_of_sentence]
     others = [t for t in range(len(tasks.specs)) if t not in u.tasks]
     for kind, ref in u.markers:
-        if kind == G.THEN and said_for_an_earlier_clause((kind, ref), k, tasks, text):
-            continue  # "A. Then B, and C too.": "then" opens B's clause, C's has no order word (the guide)
+        freed = all(t in free for t in u.tasks)
+        if kind == G.THEN and said_for_an_earlier_clause((kind, ref), k, tasks, written, freed):
+            continue  # "A. Then B, and C.": "then" opens B's clause, C's has no order word (the guide)
         if kind == G.THEN and prev is not None:
             after = [] if prev.sentence == u.sentence else _last_step(units, prev.sentence, free, edges, text)
             after = (after or _unfreed_clause(units, prev, free)) + _put_before(units, prev, free)
@@ -210,7 +219,9 @@ def _with_stated(scope: list[int], tasks: Tasks, edges: Edges) -> list[int]:
     return scope + stated
 
 
-def _step_edges(k: int, tasks: Tasks, steps: list[int], free: set[int], edges: Edges, text: str) -> None:
+def _step_edges(
+    k: int, tasks: Tasks, steps: list[int], free: set[int], edges: Edges, written: tuple[str, list[str]]
+) -> None:
     """ "A and B, then C": unit `k` after the step before its own, inside one sentence: after every task of
     that step that no word lets happen at any time ("A at any time and B, then C": after B; after the
     last clause when every task is so and "then" joins them)."""
@@ -221,7 +232,8 @@ def _step_edges(k: int, tasks: Tasks, steps: list[int], free: set[int], edges: E
     if (G.FINALLY, IN_SENTENCE) in units[opener].markers:  # "finally" states its own order
         return
     # "A, then B, and C too": C's clause has no order word (ANNOTATION_GUIDE.md)
-    apart = own_clause(k, tasks, text) and not leaves_order_open(u, text)
+    text, sentences = written
+    apart = own_clause(k, tasks, text) and not leaves_order_open(u, sentences)
     if k != opener and (apart or any(t in free for t in u.tasks)):
         return
     before = [t for t in clause_before(tasks, steps, opener, text) if t not in free] or [

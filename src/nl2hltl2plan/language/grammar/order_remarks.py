@@ -20,8 +20,17 @@ _THING = r"(?:[a-z][a-z']*(?:\s+[a-z][a-z']*){0,3}?)"
 _NOT_IN_THING = frozenset(
     "in on into onto to from under at by with for till until then and or it them you your i we is are be not "
     "don't can wait save leave keep may might could should must will would either any whichever each every "
-    "neither step steps order only just right but which what matter doesn't does".split()
+    "neither step steps order only just right but which what matter doesn't does else rest others everything "
+    "anything".split()
 )
+# every other task ("Everything else before the apple", "The lamp ones can wait until the rest is done")
+_REST = (
+    r"(?:the\s+rest|(?:everything|anything)\s+else|(?:all\s+)?the\s+others|the\s+other\s+(?:ones|two|three)|"
+    r"all\s+of\s+them|all\s+that|both(?:\s+of\s+them)?)"
+)
+_DONE = r"(?:is|are|has\s+been|have\s+been)\s+(?:done|finished|complete|completed|over)"
+# the treatments whose verb may open a remark ("Rinse the soap before anything else.")
+_TREATING = frozenset({"clean", "heat", "cool"})
 _PARTS = re.compile(r"\s*(?:,\s*(?:but|and)\s+|,|;|\s+but\s+)\s*", re.I)
 
 Relation = tuple[str, str, str]  # (kind, a, b); "free": a is "first" / "last", b the count
@@ -35,6 +44,8 @@ def _patterns() -> list[tuple[str, re.Pattern[str]]]:
             continue
         kind, pattern = line.split(":", 1)
         body = pattern.strip().replace("{x}", rf"(?P<x>{_THING})").replace("{y}", rf"(?P<y>{_THING})")
+        body = body.replace("{v}", r"(?P<v>[a-z]+(?:\s+up)?)").replace("{rest}", _REST)
+        body = body.replace("{done}", _DONE)
         out.append((kind.strip(), re.compile(rf"^{body}$", re.I)))
     return out
 
@@ -56,33 +67,64 @@ def _part(part: str) -> Relation | None:
             return kind, said["pos"].lower(), said["n"].lower()
         if kind == "rest":
             return kind, "", ""
+        verb = said.get("v")
+        if verb is not None and G.VERBS.get(verb.split()[0].lower(), ("",))[0] not in _TREATING:
+            continue  # "put the mug first" is a clause (no thing is named by a place verb alone)
         if _a_thing(said.get("x")) and (kind != "before" or _a_thing(said.get("y"))):
-            return kind, said["x"], said.get("y") or ""
+            return kind, f"{verb} {said['x']}" if verb else said["x"], said.get("y") or ""
     return None
 
 
-def order_remark(sentence: str) -> list[Relation] | None:
+def order_remark(sentence: str, before: str | None = None) -> list[Relation] | None:
     """The relations of a sentence that only says the order of tasks named elsewhere, free ones last (they
-    are checked against the edges the others give); None where any part says something else.
+    are checked against the edges the others give); None where any part says something else. `before`: the
+    text before the sentence, where a thing said to be done at any time must be named (`_read`).
 
     >>> order_remark("Soap bottles first, toilet paper last")
     [('first', 'Soap bottles', ''), ('last', 'toilet paper', '')]
     >>> order_remark("Put the mug in the sink first") is None
     True
     """
-    read = _read(sentence)
+    said = _SAID_PLAINLY.get(sentence.strip(" .!"))
+    read = said if said is not None else _read(sentence, before)
     return None if read is None else sorted((r for r, _ in read), key=lambda r: r[0] == "free")
 
 
-def _read(sentence: str) -> list[tuple[Relation, str]] | None:
-    """Each part of a remark sentence with its relation, in the order said; None: no remark."""
+# the remarks `remarks_said_plainly` wrote, by the plain sentence, with what it read in them: the rules'
+# step (`sentences.read_sentences`, on the normalised text, a string) takes them from here, not parsing them
+# again; a sentence a later rewrite changed is not here and is parsed (the same relations: `_plain`). Only
+# what the sentence alone decides is kept (not "X whenever", which needs X named before it).
+_SAID_PLAINLY: dict[str, list[tuple[Relation, str]]] = {}
+_SAID_PLAINLY_MAX = 4096
+
+
+def _said_plainly(plain: str, read: list[tuple[Relation, str]]) -> None:
+    if len(_SAID_PLAINLY) >= _SAID_PLAINLY_MAX:
+        _SAID_PLAINLY.clear()
+    _SAID_PLAINLY[plain.strip(" .!")] = read
+
+
+def _read(sentence: str, before: str | None = None) -> list[tuple[Relation, str]] | None:
+    """Each part of a remark sentence with its relation, in the order said; None: no remark. "The CD
+    whenever." where no CD is named `before` is no remark: it is the task before, for the CD (`repeats`)."""
     parts = [p.strip(" .!") for p in _PARTS.split(sentence.strip(" .!")) if p.strip(" .!")]
     read = [(_part(p), p) for p in parts if not _COURTESY.match(p)]
     if not read or any(r is None for r, _ in read):
         return None
     if len(read) > 1 and all(r[0] == "rest" for r, _ in read if r is not None):
         return None
+    if before is not None and any(r[0] == "any" and not _named_before(r[1], before) for r, _ in read if r):
+        return None
     return [(r, p) for r, p in read if r is not None]
+
+
+_NAMING = frozenset("the a an that this one ones job jobs task tasks stuff".split())
+
+
+def _named_before(thing: str, before: str) -> bool:
+    """Is a word of `thing` (its name, not "the" / "ones") in the text before, a plural's stem too?"""
+    words = [w for w in thing.lower().split() if w not in _NAMING]
+    return any(re.search(rf"\b{re.escape(w[:-1] if w.endswith('s') else w)}", before, re.I) for w in words)
 
 
 _SENTENCE = re.compile(r"[^.;!?]+[.;!?]*\s*")
@@ -109,7 +151,7 @@ def remarks_said_plainly(text: str) -> str:
     'Put A on B. the spray bottle first; '
     """
     text = _LAST_CLAUSE_ELSE.sub(lambda m: ". " if m["verb"].lower() in G.VERBS else m[0], text)
-    spans = [(m, _read(m[0].rstrip(".;!? "))) for m in _SENTENCE.finditer(text)]
+    spans = [(m, _read(m[0].rstrip(".;!? "), text[: m.start()])) for m in _SENTENCE.finditer(text)]
     ends = any(r is not None and any(k in ("first", "last") for (k, _, _), _ in r) for _, r in spans)
     out = []
     for m, read in spans:
@@ -119,8 +161,11 @@ def remarks_said_plainly(text: str) -> str:
         if read is not None and (ends or any(k != "rest" for (k, _, _), _ in read)):
             body = said.rstrip(".;!? ")
             lead, end = body[: len(body) - len(body.lstrip())], said[len(body) :]
-            plain = ", ".join(s for (k, a, _), p in read if (s := _plain(k, a, p)))
+            read = [(r, s) for r, p in read if (s := _plain(r[0], r[1], p))]
+            plain = ", ".join(s for _, s in read)
             said = lead + plain + end if plain else ""
+        if read and all(r[0] != "any" for r, _ in read):  # "any" hangs on the text before: parsed in place
+            _said_plainly(said, read)
         out.append(head + said)
     return "".join(out)
 

@@ -6,6 +6,7 @@ carried in one task and chilled in another), is unread by name: never a guess.""
 
 from __future__ import annotations
 
+from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, Tasks
 from nl2hltl2plan.language.grammar.phrases import parse_np
 from nl2hltl2plan.language.grammar.references import NOT_CERTAIN, former_or_latter, ref_targets, treated_tasks
@@ -20,6 +21,7 @@ _TASK_NOUNS = frozenset({"one", "job", "task", "thing", "bit", "stuff", "part"})
 _PLURAL_NOUNS = frozenset({"ones", "jobs", "tasks", "things", "bits", "parts"})
 _THAT = frozenset({"that", "this", "it"})
 _COUNTS = {"two": 2, "three": 3, "2": 2, "3": 3}
+_TREATED = {"clean": "clean_place", "heat": "heat_place", "cool": "cool_place"}  # a treatment verb's task
 
 
 def remark_edges(
@@ -42,6 +44,10 @@ def remark_edges(
             b.unparsed.append(f"the {rel.a} {rel.b} in any order ({NOT_CERTAIN}: an order was said for them)")
         return True
     named = _named(rel.a, tasks, rel.sentence)
+    if kind == "any":  # "The CD whenever.": no order of its own for a task said elsewhere (it adds none)
+        if not named:
+            b.unparsed.append(f"{rel.a} at any time ({NOT_CERTAIN}: no task, or more than one, fits)")
+        return True
     if kind == "before":
         later = _named(rel.b, tasks, rel.sentence)
         if named and later and not set(named) & set(later):
@@ -85,6 +91,9 @@ def _fitting(ref: str, tasks: Tasks, sentence: int) -> tuple[list[int], bool] | 
     words = [w for w in ref.lower().split() if w not in _SKIP]
     many = bool(_PLURAL_NOUNS.intersection(words))
     words = [w for w in words if w not in _TASK_NOUNS | _PLURAL_NOUNS]
+    if len(words) > 1 and (kind := _TREATED.get(G.VERBS.get(words[0], ("",))[0])):  # "rinse the soap"
+        fit = _fitting(" ".join(w for w in words[1:] if w != "up"), tasks, sentence)
+        return None if fit is None else ([i for i in fit[0] if tasks.specs[i].kind == kind], fit[1])
     if (position := former_or_latter(words, list(range(len(tasks.specs))))) is not None:
         return position, False  # "the former first": of two tasks
     if not words or set(words) <= _THAT:  # "That last.": the tasks of the sentence just before (one fits)

@@ -93,7 +93,8 @@ def read_sentences(text: str) -> Sentences:
         if rel is not None:
             out.relations.append(rel)
             continue
-        if (remark := order_remark(sentence)) is not None:  # "Soap bottles first, toilet paper last."
+        # "Soap bottles first, toilet paper last."; "The CD whenever." of a CD named before
+        if (remark := order_remark(sentence, text[:start])) is not None:
             out.relations += [RelationSentence(f"remark_{k}", a, b, index) for k, a, b in remark]
             continue
         trailing, body = strip_trailing(body)

@@ -9,7 +9,6 @@ from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.draft_tasks import Tasks, Unit
 from nl2hltl2plan.language.grammar.frames import IN_SENTENCE
-from nl2hltl2plan.language.grammar.sentences import split_sentences
 
 # "in any order" / "order doesn't matter" said of a sentence: its clauses are one group
 ANY_ORDER = re.compile(r"\b(?:any|either|whatever|whichever|no\s+particular)\s+order\b", re.I)
@@ -86,22 +85,37 @@ def own_clause(k: int, tasks: Tasks, text: str) -> bool:
     return end >= 0 and "," in between and _ADDITIVE.match(between) is None
 
 
-def said_for_an_earlier_clause(marker: tuple[str, str], k: int, tasks: Tasks, text: str) -> bool:
+_ADDED_LAST = re.compile(rf"\b{phrase_list_pattern('order_scope.txt', 'added_last')}\W*$", re.I)
+# a sentence that opens with "then" and no comma: "then" opens its first clause only (the committed sets'
+# truths: "X. Then B, C, and D." -> [X, B]); "After that, B, and C." sets the marker apart: the sentence
+_BARE_THEN = re.compile(r"^\W*(?:and\s+)?then\b(?!\s*,)", re.I)
+
+
+def said_for_an_earlier_clause(
+    marker: tuple[str, str], k: int, tasks: Tasks, written: tuple[str, list[str]], freed: bool
+) -> bool:
     """Is a sentence's leading marker on unit `k` one that an earlier clause of the sentence carries (it was
-    said once, before that clause), with no "then" of its own joining `k`? Not where the sentence groups its
-    clauses by leaving their order open ("Then B and C in any order": both after, the benchmark's form), nor
-    where `k` is not a clause of its own (`own_clause`)."""
+    said once, before that clause), and `k` a clause of its own (`own_clause`) outside the marker's scope:
+    after a bare "Then" ("X. Then B, and C." -> [X, B]: C's clause has no order word, ANNOTATION_GUIDE.md),
+    one that adds a task ("..., and C too"), or one its own words free (`freed`: "..., and C whenever")?
+    Otherwise a marker set apart by a comma opens the whole sentence ("After that Y" -> [previous task, Y],
+    Y all it introduces: "X. After that, B, and C." orders B and C after X), as where the sentence leaves
+    its clauses' order open ("Then B and C in any order": both after, the benchmark's form)."""
+    text, sentences = written
     units = tasks.units
     u = units[k]
-    if u.seq_after_prev or leaves_order_open(u, text) or not own_clause(k, tasks, text):
+    if u.seq_after_prev or leaves_order_open(u, sentences) or not own_clause(k, tasks, text):
+        return False
+    said = sentences[u.sentence] if u.sentence < len(sentences) else ""
+    if not (freed or _BARE_THEN.match(said) or _ADDED_LAST.search(tasks.specs[u.tasks[-1]].text)):
         return False
     return any(v.sentence == u.sentence and marker in v.markers for v in units[:k])
 
 
-def leaves_order_open(u: Unit, text: str) -> bool:
-    """Does `u`'s sentence say "in any order" / "order doesn't matter" (one group: "then" is for all)?"""
-    said = sentences[u.sentence][0] if u.sentence < len(sentences := split_sentences(text)) else ""
-    return says_any_order(said)
+def leaves_order_open(u: Unit, sentences: list[str]) -> bool:
+    """Does `u`'s sentence (of the instruction's `sentences`, `split_sentences` once for all its units) say
+    "in any order" / "order doesn't matter" (one group: "then" is for all)?"""
+    return says_any_order(sentences[u.sentence] if u.sentence < len(sentences) else "")
 
 
 def says_any_order(said: str) -> bool:

@@ -534,7 +534,7 @@ TRAILING: list[tuple[re.Pattern[str], str]] = [
             r"(?:done|completed|performed|finished|placed|put|moved|carried\s+out)\s+)?(?:but\s+)?"
             r"(?:(?:only|right|just|immediately)\s+)?"
             r"(?P<rel>after|before|(?:ahead\s+of|prior\s+to)(?=\s+(?!turning|switching)\w+ing\b)|once|"
-            r"when(?=\s+(?:\w+ing|the)\b))\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|both\s+"
+            r"when(?=\s+(?:\w+ing|the|both\s+(?:of\s+th[a-z]+\s+)?(?:are|have))\b))\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|both\s+"
             r"(?=(?:[a-z]+\s+){1,2}(?:jobs?|ones|tasks?|chores)\b|(?:of\s+th[a-z]+\s+)?(?:are|have)\s)|finishing|completing).+)$",
             _F,
         ),
