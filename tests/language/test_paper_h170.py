@@ -70,12 +70,18 @@ def test_a_fragment_sentence_repeats_a_task_with_a_source_without_it():
     [
         # two tasks before
         "Put the mug in the sink and the cup in the fridge, and do the same with the bowl.",
-        "Put two bars of soap in the tub, and do the same with a rag.",  # a count: which part is repeated?
         "Put the mug in the sink, and do the same with the coffee mug.",  # one type twice
     ],
 )
 def test_a_repeat_inside_a_sentence_that_is_not_one_plain_task_stays(text):
     assert repeated_for_another(text) == text
+
+
+def test_a_repeat_after_a_count_takes_the_new_things_own_count():
+    """ "do the same with a rag" after "two bars of soap": "a rag" says its own count, one (h237's repeats;
+    before, the count made the repeat unread)."""
+    text = "Put two bars of soap in the tub, and do the same with a rag."
+    assert repeated_for_another(text) == "Put two bars of soap in the tub, and put a rag in the tub."
 
 
 @needs_data
