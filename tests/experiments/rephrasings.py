@@ -2564,3 +2564,29 @@ DEV_H229: dict[str, dict[int, list[str]]] = {
             "plate."],
     },
 }
+
+# h235 (session 31, issues 24 and 28): held out. The four tasks in two voices of my own (a stage magician, a
+# ward nurse) whose frames are words no frame list holds ("Ta-da!", "Abracadabra!", "Trick number 2:",
+# "Ward round, bed 2:", "There we go, poppet.", "Chin up, love."), and a label naming the first object
+# ("Carrot trick:"). Written with DEV_H235 and committed before any rule changed, scored once at the end.
+VALID_H235: dict[str, dict[int, list[str]]] = {
+    "magician": {
+        1: ["Ta-da! Put the green apple on the blue plate and the orange on the yellow plate. Abracadabra!"],
+        2: ["Trick number 2: put the red apple on the blue plate, the green apple on the pink plate and the "
+            "orange on the yellow plate, in any order. Behold!"],
+        3: ["Carrot trick: the carrot goes on the blue plate, the orange on the yellow plate, the green apple "
+            "on the green plate and the red apple on the pink plate. Marvellous."],
+        4: ["Illusion 4, my lovely assistants: put the green apple and the orange in the yellow plate first, "
+            "then the carrot and the red apple in the blue plate, in either order. A round of applause!"],
+    },
+    "nurse_ward": {
+        1: ["Morning, sweetheart. Put the green apple on the blue plate and the orange on the yellow plate. "
+            "There we go, poppet."],
+        2: ["Ward round, bed 2: put the red apple on the blue plate, the green apple on the pink plate and the "
+            "orange on the yellow plate, any order you like. Lovely, thanks, petal."],
+        3: ["Right then, my dears: the carrot goes on the blue plate, the orange on the yellow plate, the "
+            "green apple on the green plate and the red apple on the pink plate. Nice and gentle."],
+        4: ["Orange and green apple first, pet: both in the yellow plate. Once they're in, the carrot and the "
+            "red apple go in the blue plate, either order. Chin up, love."],
+    },
+}
