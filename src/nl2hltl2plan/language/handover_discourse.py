@@ -47,10 +47,11 @@ import re
 from functools import lru_cache
 from typing import NamedTuple
 
-from nl2hltl2plan.language.content_words import vocabulary, word_categories
+from nl2hltl2plan.language.content_words import LOCATIVE, OBJECT_START, vocabulary, word_categories
 from nl2hltl2plan.language.courtesy import courtesy_pattern, courtesy_words
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
+from nl2hltl2plan.language.spelling import english_lemmas, english_word
 
 # words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
 MEANING = re.compile(
@@ -139,7 +140,14 @@ def _content_word(word: str) -> bool:
 
 
 @lru_cache(maxsize=16384)  # pure; a sentence is read again for each restated reading
-def empty(fragment: str, label: bool = False, whole: bool = False, header: bool = False) -> bool:
+def empty(
+    fragment: str,
+    label: bool = False,
+    whole: bool = False,
+    header: bool = False,
+    edge: bool = False,
+    lead: bool = False,
+) -> bool:
     """True when the fragment says nothing a spec can use (see the module docstring); a `label` (before a
     colon) may also hold the words that announce the work ("Steps", "Here's the idea"), a `whole`
     sentence may also be one that ends the message ("Done."), and the instruction's `header` (its first
@@ -152,20 +160,92 @@ def empty(fragment: str, label: bool = False, whole: bool = False, header: bool 
     """
     frame = _frame()
     text = re.sub(r"#\s*\d+\b", " ", fragment.lower().replace("’", "'"))  # "#212": a ticket's number
-    text = " ".join(re.sub(r"[^a-z0-9#]+", " ", text).split())
-    if whole and text in frame.alone:
+    text = " ".join(re.sub(r"[^a-z0-9#]+", " ", _PARTS.sub(f" {_SEP} ", text)).split())
+    if whole and " ".join(text.replace(_SEP, " ").split()) in frame.alone:
         return True
     text = frame.opening.sub(" ", text)
     if header:
-        text = frame.records.sub(" ", text)
+        text = _RECORD.sub(lambda m: " " if _record_kind(m[1]) else m[0], frame.records.sub(" ", text))
     text = " ".join(frame.phrases.sub(" ", text).split())
     if label:
         text = frame.label.sub(" ", text)
     text = _without_addressees(_CALL.sub(r"\1 ", text))
+    # "it" as the whole job ("can you do it", "easy does it") and "one" as a thing said of the job ("here's
+    # a tricky one") name nothing a task needs
+    text = _A_ONE.sub(lambda m: m[0] if _content_word(m[1]) else " ", _DO_IT.sub(" ", text))
     if MEANING.search(text) or _ACTION.search(text):
         return False
-    words = re.findall(r"[a-z0-9]+", text)
-    return all((w in frame.single or _HESITATION.fullmatch(w)) and not _content_word(w) for w in words)
+    parts = [tuple(re.findall(r"[a-z0-9]+", part)) for part in text.split(_SEP)]
+    set_off = edge or len(parts) > 1  # a part set off by a comma or dash may address the listeners
+
+    def said(ws: tuple[str, ...], k: int) -> bool:
+        # a label's words, and a word alone that opens a sentence or stands beside another part ("Squad,
+        # ...", "Peace out, chat"), may be nouns: they name the document or the listeners
+        address = label or (set_off and len(ws) == 1 and (lead or len(parts) > 1))
+        return filler(ws, k, set_off, address)
+
+    return all(
+        not _content_word(w) and (w in frame.single or bool(_HESITATION.fullmatch(w)) or said(ws, k))
+        for ws in parts
+        for k, w in enumerate(ws)
+    )
+
+
+# a record's kind and its number opening the text ("Drill 5", "Speedrun attempt 3", "Ward round, bed 2"):
+# any word English knows that says nothing a task needs, before a number (a letter may be a region: only the
+# listed kinds take one)
+_RECORD = re.compile(r"\b((?:[a-z]+\s+){0,2}?[a-z]+)\s+(?:no\s+|number\s+)?\d+\b")
+
+
+def _record_kind(words: str) -> bool:
+    said = tuple(words.split())
+    return not MEANING.search(words) and all(
+        not _content_word(w) and (w in _frame().single or filler(said, k, address=True)) for k, w in enumerate(said)
+    )
+
+
+_DO_IT = re.compile(r"\b(?:do|does|did)\s+it\b(?!\s+(?:again|twice|\d))")
+_A_ONE = re.compile(r"\ban?\s+([a-z]+)\s+one\b")
+_PARTS = re.compile(r",|;|\s[-–—]+\s")  # what sets a part of a fragment off
+_SEP = "qqpartqq"  # the mark of a part's end while the fragment is read as words
+# what opens a thing's name or a place: after one of these, a word may name what is moved or where to
+_THING_BEFORE = OBJECT_START | LOCATIVE - {"of"} | frozenset("to into onto toward towards".split())
+
+
+@lru_cache(maxsize=1)
+def _keeps() -> frozenset[str]:
+    return frozenset().union(*word_categories("frame_keeps.txt").values())
+
+
+@lru_cache(maxsize=16384)
+def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool = False) -> bool:
+    """Whether `words[k]`, a word of a fragment that holds no content word, is general English filler
+    that names nothing a task needs (h235): a word English knows that is used as something other than a
+    noun ("luck", "easy", "gather", "lovely"), never after a determiner or a place's preposition (where it
+    may name a thing: "smash that button", "put it on the zebra"); a noun alone only where it addresses
+    the listeners, set off by a comma: a group ("campers", "buddies") or after "my" / "dear" ("my dears").
+    A word no list of English knows ("gg", a misspelt name) and a word that adds a thing ("too",
+    `frame_keeps.txt`: "the zebra too") are never filler.
+
+    >>> filler(("best", "of", "luck"), 2), filler(("the", "zebra"), 1), filler(("zebra",), 0)
+    (True, False, False)
+    >>> filler(("campers",), 0, set_off=True), filler(("campers",), 0)
+    (True, False)
+    """
+    word = words[k]
+    if word in _keeps() or word.isdigit() or not english_word(word):
+        return False
+    vocative = set_off and k > 0 and words[k - 1] in ("my", "dear")
+    if any(w in _THING_BEFORE for w in words[:k]) and not vocative:
+        return False
+    kinds = english_lemmas(word)
+    if set(kinds) - {"NOUN", "PROPN"}:
+        return True
+    # a plural: "campers", "buddies", "gamers" (a word the lexicon lacks, whose singular English knows)
+    group = any(lemma != word for lemma in kinds.get("NOUN", ())) or (
+        not kinds and word.endswith("s") and english_word(word[:-1])
+    )
+    return address or (set_off and (group or vocative))
 
 
 _LABEL = re.compile(r"^\s*([^:]{1,60}?)\s*:\s*(?=\S)")
@@ -182,16 +262,18 @@ def _unframed_sentence(sentence: str, header: bool = False) -> str:
         head = label if label and empty(label.group(1), label=True, header=header) else _LEAD.match(sentence)
         if head is None:
             break
-        if not (empty(head.group(1), label=head is label, header=header) or _called(head.group(1))):
+        said = head.group(1)
+        lead = head is not label
+        if not (empty(said, label=not lead, header=header, edge=lead, lead=lead) or _called(said)):
             break
         sentence = sentence[head.end() :]
     sentence = _unrelayed(_ASIDE.sub("", sentence))
     tail = _TAIL.search(sentence)
-    if tail and empty(tail.group(1)):
+    if tail and empty(tail.group(1), edge=True):
         sentence = sentence[: tail.start()]
     # and a phrase set off by commas inside it ("then, robots, put ..."); a hesitation ("the three, uh, the
     # three objects") stays, for `handover_spoken` to tell a phrase said again from a correction
-    return _INNER.sub(lambda m: "," if empty(m[1]) and not _hesitation(m[1]) else m[0], sentence)
+    return _INNER.sub(lambda m: "," if empty(m[1], edge=True) and not _hesitation(m[1]) else m[0], sentence)
 
 
 def _hesitation(fragment: str) -> bool:
