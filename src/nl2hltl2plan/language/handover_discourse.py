@@ -147,6 +147,8 @@ def empty(
     header: bool = False,
     edge: bool = False,
     lead: bool = False,
+    general: bool = True,
+    names: frozenset[str] = frozenset(),
 ) -> bool:
     """True when the fragment says nothing a spec can use (see the module docstring); a `label` (before a
     colon) may also hold the words that announce the work ("Steps", "Here's the idea"), a `whole`
@@ -165,14 +167,16 @@ def empty(
         return True
     text = frame.opening.sub(" ", text)
     if header:
-        text = _RECORD.sub(lambda m: " " if _record_kind(m[1]) else m[0], frame.records.sub(" ", text))
+        text = frame.records.sub(" ", text)
+        text = _RECORD.sub(lambda m: " " if general and _record_kind(m[1]) else m[0], text)
     text = " ".join(frame.phrases.sub(" ", text).split())
     if label:
         text = frame.label.sub(" ", text)
     text = _without_addressees(_CALL.sub(r"\1 ", text))
     # "it" as the whole job ("can you do it", "easy does it") and "one" as a thing said of the job ("here's
     # a tricky one") name nothing a task needs
-    text = _A_ONE.sub(lambda m: m[0] if _content_word(m[1]) else " ", _DO_IT.sub(" ", text))
+    if general:
+        text = _A_ONE.sub(lambda m: m[0] if _content_word(m[1]) else " ", _DO_IT.sub(" ", text))
     if MEANING.search(text) or _ACTION.search(text):
         return False
     parts = [tuple(re.findall(r"[a-z0-9]+", part)) for part in text.split(_SEP)]
@@ -185,7 +189,7 @@ def empty(
         return filler(ws, k, set_off, address)
 
     return all(
-        not _content_word(w) and (w in frame.single or bool(_HESITATION.fullmatch(w)) or said(ws, k))
+        not _content_word(w) and w not in names and (w in frame.single or bool(_HESITATION.fullmatch(w)) or general and said(ws, k))
         for ws in parts
         for k, w in enumerate(ws)
     )
@@ -249,31 +253,88 @@ def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool 
 
 
 _LABEL = re.compile(r"^\s*([^:]{1,60}?)\s*:\s*(?=\S)")
+# a label set off by a dash that says again what its sentence names ("Green apple stuff - put ...")
+_DASHED = re.compile(r"^\s*([^,:;]{1,40}?)\s+[-–—]+\s+(?=\S)")
 # (a dash sets a leading phrase off as a comma does: "Morning folks - ...")
 _LEAD = re.compile(r"^\s*([^,:]{1,40}?)\s*(?:,|\s[-–—]+\s|[–—])\s*(?=\S)")
 _TAIL = re.compile(r",\s*([^,:]{1,40}?)\s*$")
 
 
-def _unframed_sentence(sentence: str, header: bool = False) -> str:
-    """The sentence without its empty labels ("Re: ...:", "Copy that: ..."), its empty leading phrases
-    ("Okay robot, ...", "Hey arms, uh, ...") and an empty phrase at its end ("..., over")."""
+def frame_note(dropped: list[str]) -> str:
+    """The note that says what the general filler rule dropped (every reader's wording)."""
+    return "dropped as frame (names nothing a task needs): " + ", ".join(map(repr, dict.fromkeys(dropped)))
+
+
+class Dropped(NamedTuple):
+    """Where the general filler rule's drops are written (`dropped`, shown in the result's notes) and the
+    world's own names, each word a content word (`names`: "orange", "plate" in the tabletop world)."""
+
+    dropped: list[str] | None = None
+    names: frozenset[str] = frozenset()
+
+
+def _gone(fragment: str, seen: Dropped, shown: str | None = None, **where: bool) -> bool:
+    """`empty(fragment, **where)`; a fragment that only the general filler rule finds empty is added to
+    `seen.dropped` (as `shown`, where the fragment was read without some of its words)."""
+    if not empty(fragment, names=seen.names, **where):
+        return False
+    if seen.dropped is not None and not empty(fragment, general=False, names=seen.names, **where):
+        seen.dropped.append(" ".join((shown or fragment).split()).strip(" ,.!?;:"))
+    return True
+
+
+def _label_restated(label: str, after: str, names: frozenset[str]) -> str:
+    """The label without its words that the sentence under it says again: "Carrot duty: the carrot goes
+    ..." is "duty", "Blue block stuff - put the blue block ..." is "stuff" (a header of what follows)."""
+    again = {form for w in re.findall(r"[a-z]+", after.lower()) for form in (w, w.removesuffix("s"))}
+
+    def said_again(m: re.Match[str]) -> str:
+        word = m[0].lower()
+        named = MEANING.fullmatch(word) or _content_word(word) or word in names
+        return " " if named and (word in again or word.removesuffix("s") in again) else m[0]
+
+    return re.sub(r"[A-Za-z]+", said_again, label).strip()
+
+
+def heads_dropped(sentence: str, header: bool = False, seen: Dropped = Dropped()) -> str:
+    """The sentence without its empty labels ("Re: ...:", "Copy that: ...", a label that only says again
+    what the sentence under it names: "Carrot duty:") and its empty leading phrases ("Okay robot, ...",
+    "Hey arms, uh, ...")."""
     while True:
-        label = _LABEL.match(sentence)
-        head = label if label and empty(label.group(1), label=True, header=header) else _LEAD.match(sentence)
+        label = _LABEL.match(sentence) or _DASHED.match(sentence)
+        bare = _label_restated(label.group(1), sentence[label.end() :], seen.names) if label else ""
+        named = label and bare != label.group(1)
+        is_label = label and (named or empty(bare, label=True, header=header, names=seen.names))
+        head = label if is_label else _LEAD.match(sentence)
         if head is None:
             break
         said = head.group(1)
         lead = head is not label
-        if not (empty(said, label=not lead, header=header, edge=lead, lead=lead) or _called(said)):
+        if lead and not (_gone(said, seen, edge=True, lead=True, header=header) or _called(said)):
+            break
+        if not lead and not _gone(bare, seen, shown=said, label=True, header=header) and not (
+            named and empty(bare, label=True, header=header, names=seen.names)
+        ):
             break
         sentence = sentence[head.end() :]
-    sentence = _unrelayed(_ASIDE.sub("", sentence))
+    return sentence
+
+
+def tails_dropped(sentence: str, seen: Dropped = Dropped()) -> str:
+    """The sentence without an empty phrase at its end ("..., over") or set off by commas inside it."""
     tail = _TAIL.search(sentence)
-    if tail and empty(tail.group(1), edge=True):
+    if tail and _gone(tail.group(1), seen, edge=True):
         sentence = sentence[: tail.start()]
     # and a phrase set off by commas inside it ("then, robots, put ..."); a hesitation ("the three, uh, the
     # three objects") stays, for `handover_spoken` to tell a phrase said again from a correction
-    return _INNER.sub(lambda m: "," if empty(m[1], edge=True) and not _hesitation(m[1]) else m[0], sentence)
+    return _INNER.sub(lambda m: "," if not _hesitation(m[1]) and _gone(m[1], seen, edge=True) else m[0], sentence)
+
+
+def _unframed_sentence(sentence: str, header: bool = False, dropped: list[str] | None = None) -> str:
+    """The sentence without its empty labels, leading phrases and phrases at its end, a relayed command
+    said as the command."""
+    seen = Dropped(dropped)
+    return tails_dropped(_unrelayed(_ASIDE.sub("", heads_dropped(sentence, header, seen))), seen)
 
 
 def _hesitation(fragment: str) -> bool:
@@ -522,13 +583,13 @@ def _name(text: str) -> bool:
     return bool(_NAME.match(text)) and not known
 
 
-def _unsigned(sentences: list[str]) -> list[str]:
+def _unsigned(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
     """The sentences without the writer's name that signs the empty sign-off ending them: "Best, Ana", or
     "Thanks," and then "Ana" on a line of its own."""
     if len(sentences) > 1 and _name(sentences[-1]) and empty(sentences[-2], whole=True):
         return sentences[:-1]
     signed = re.fullmatch(r"(.+),([^,]+)", sentences[-1]) if sentences else None
-    if signed and _name(signed[2]) and empty(signed[1]):
+    if signed and _name(signed[2]) and _gone(signed[1], Dropped(dropped)):
         return sentences[:-1]
     return sentences
 
@@ -540,17 +601,18 @@ _START_SIGNAL = re.compile(
 )
 
 
-def plain(sentences: list[str]) -> list[str]:
+def plain(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
     """The sentences with empty fragments, start signals and a sign-off's name dropped, reported speech and
-    first-person narration said as the team's commands (see the module docstring)."""
+    first-person narration said as the team's commands (see the module docstring); what only the general
+    filler rule dropped is added to `dropped`, where given."""
     out = []
-    for k, sentence in enumerate(_unsigned(sentences)):
-        if empty(sentence, whole=True, header=k == 0) or _START_SIGNAL.match(sentence):
+    for k, sentence in enumerate(_unsigned(sentences, dropped)):
+        if _gone(sentence, Dropped(dropped), whole=True, header=k == 0) or _START_SIGNAL.match(sentence):
             continue
         if k == 0 and _called(sentence.rstrip(" ,.!:")):  # a letter's greeting on its own: "Dear Sam,"
             continue
-        text = _unframed_sentence(sentence, header=k == 0)
-        text = _unframed_sentence(first_person_as_team(unreported(text)), header=k == 0)
-        if text.strip() and not empty(text, whole=True, header=k == 0):
+        text = _unframed_sentence(sentence, header=k == 0, dropped=dropped)
+        text = _unframed_sentence(first_person_as_team(unreported(text)), header=k == 0, dropped=dropped)
+        if text.strip() and not _gone(text, Dropped(dropped), whole=True, header=k == 0):
             out.append(text)
     return out

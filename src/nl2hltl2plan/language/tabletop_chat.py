@@ -30,7 +30,14 @@ import re
 
 from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.courtesy import without_greetings
-from nl2hltl2plan.language.handover_discourse import frame_words
+from nl2hltl2plan.language.handover_discourse import (
+    Dropped,
+    empty,
+    frame_note,
+    frame_words,
+    heads_dropped,
+    tails_dropped,
+)
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
 _FIND = re.compile(
@@ -87,10 +94,45 @@ def _document_label_dropped(text: str) -> str:
     return text[label.end() :]
 
 
+_SENTENCE_END = re.compile(r"(?<=[.!?])\s+")
+# a record's kind and number opening the text ("Level 1:", "Cabin 4,"): a header unless the kind numbers
+# another part of the text too ("Task 1: ... Task 2: ...": the steps' labels)
+_NUMBERED = re.compile(r"^\s*(?:[A-Za-z]+\s+){0,2}?([A-Za-z]+)\s+(?:no\.?\s+|number\s+)?#?\d+\b")
+
+
+def frames_dropped(text: str, kinds: dict[str, bool], dropped: list[str] | None = None) -> str:
+    """`text` without the sentences, labels, leading and closing phrases that name nothing a task needs,
+    by the handover reader's rule (`handover_discourse.empty`, with the world's names as content words): "Breathe
+    in, friends.", "Campers, ...", "..., buddies!", "Carrot duty: the carrot goes ..."; what only the
+    general filler rule drops is added to `dropped`."""
+    seen = Dropped(dropped, frozenset(w for name in kinds for w in name.lower().split()))
+    sentences = _SENTENCE_END.split(text.strip())
+    kind = _NUMBERED.match(sentences[0]) if sentences else None
+    again = kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[kind.end() :], re.IGNORECASE)
+    out = []
+    for k, sentence in enumerate(sentences):
+        header = k == 0 and not again
+        if empty(sentence, whole=True, header=header, names=seen.names):
+            if dropped is not None and not empty(sentence, whole=True, header=header, general=False, names=seen.names):
+                dropped.append(sentence.strip(" .!?"))
+            continue
+        said = tails_dropped(heads_dropped(sentence, header, seen), seen).strip()
+        end = sentence.rstrip()[-1:]
+        out.append(said + end if end in ".!?" and not said.endswith(end) else said)
+    return " ".join(s for s in out if s)
+
+
+def frame_notes(text: str, kinds: dict[str, bool]) -> list[str]:
+    """The note that says what `frames_dropped` dropped by the general filler rule, if anything."""
+    dropped: list[str] = []
+    frames_dropped(text, kinds, dropped)
+    return [frame_note(dropped)] if dropped else []
+
+
 def chat_read(text: str, kinds: dict[str, bool]) -> str:
     """`text` with its chat forms read as plain words (see the module docstring); `kinds`: each object or
     plate name in words -> is it a plate (a sign-off's name that is a word of one stays)."""
-    text = _document_label_dropped(text)
+    text = frames_dropped(_document_label_dropped(text), kinds)
     text = _FIND.sub(lambda m: f"{m['order']} you like", text)
     text = _YOURS.sub(lambda m: f"{m['head']} they're {m['all'] or 'all'} there", text)  # "in there": there
     text = _ON_IT.sub(r"\g<head>there", text)

@@ -30,7 +30,7 @@ from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.headings import answered
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
-from nl2hltl2plan.language.tabletop_chat import chat_read
+from nl2hltl2plan.language.tabletop_chat import chat_read, frame_notes
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
 from nl2hltl2plan.language.tabletop_dialogue import dialogue_read, scenario_read
 from nl2hltl2plan.language.tabletop_fields import fields_read
@@ -253,7 +253,10 @@ class TabletopReader:
             return True
 
     def notes(self, instruction: str) -> list[str]:
-        return []  # its spellings of names ("grean apple") are the respelling notes' own
+        """What the general filler rule dropped as frame (its spellings of names, "grean apple", are the
+        respelling notes' own)."""
+        kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
+        return frame_notes(instruction, kinds)
 
     def unused(self, res: LanguageResult) -> list[Unread]:
         """Each object or plate the instruction names (outside its negated clauses) that no base task
