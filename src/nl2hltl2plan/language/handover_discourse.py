@@ -188,11 +188,13 @@ def empty(
         address = label or (set_off and len(ws) == 1 and (lead or len(parts) > 1))
         return filler(ws, k, set_off, address)
 
-    return all(
-        not _content_word(w) and w not in names and (w in frame.single or bool(_HESITATION.fullmatch(w)) or general and said(ws, k))
-        for ws in parts
-        for k, w in enumerate(ws)
-    )
+    def frame_word(ws: tuple[str, ...], k: int) -> bool:
+        w = ws[k]
+        if _content_word(w) or w in names:
+            return False
+        return w in frame.single or bool(_HESITATION.fullmatch(w)) or (general and said(ws, k))
+
+    return all(frame_word(ws, k) for ws in parts for k in range(len(ws)))
 
 
 # a record's kind and its number opening the text ("Drill 5", "Speedrun attempt 3", "Ward round, bed 2"):
@@ -204,7 +206,8 @@ _RECORD = re.compile(r"\b((?:[a-z]+\s+){0,2}?[a-z]+)\s+(?:no\s+|number\s+)?\d+\b
 def _record_kind(words: str) -> bool:
     said = tuple(words.split())
     return not MEANING.search(words) and all(
-        not _content_word(w) and (w in _frame().single or filler(said, k, address=True)) for k, w in enumerate(said)
+        not _content_word(w) and (w in _frame().single or filler(said, k, address=True))
+        for k, w in enumerate(said)
     )
 
 
@@ -243,6 +246,8 @@ def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool 
     if any(w in _THING_BEFORE for w in words[:k]) and not vocative:
         return False
     kinds = english_lemmas(word)
+    if word.endswith("ly") and "ADV" in kinds:  # how or in what order: "respectively", "sequentially"
+        return False
     if set(kinds) - {"NOUN", "PROPN"}:
         return True
     # a plural: "campers", "buddies", "gamers" (a word the lexicon lacks, whose singular English knows)
@@ -266,21 +271,28 @@ def frame_note(dropped: list[str]) -> str:
 
 
 class Dropped(NamedTuple):
-    """Where the general filler rule's drops are written (`dropped`, shown in the result's notes) and the
-    world's own names, each word a content word (`names`: "orange", "plate" in the tabletop world)."""
+    """Where the general filler rule's drops are written (`dropped`, shown in the result's notes), the
+    world's own names, each word a content word (`names`: "orange", "plate" in the tabletop world), and
+    whether only what the lists alone keep is dropped (`only_general`: a reader with its own policy for
+    listed greetings and thanks, the tabletop's `courtesy.without_greetings`)."""
 
     dropped: list[str] | None = None
     names: frozenset[str] = frozenset()
+    only_general: bool = False
 
 
-def _gone(fragment: str, seen: Dropped, shown: str | None = None, **where: bool) -> bool:
+_NOTHING_SEEN = Dropped()
+
+
+def frame_gone(fragment: str, seen: Dropped, shown: str | None = None, **where: bool) -> bool:
     """`empty(fragment, **where)`; a fragment that only the general filler rule finds empty is added to
     `seen.dropped` (as `shown`, where the fragment was read without some of its words)."""
     if not empty(fragment, names=seen.names, **where):
         return False
-    if seen.dropped is not None and not empty(fragment, general=False, names=seen.names, **where):
+    listed = empty(fragment, general=False, names=seen.names, **where)
+    if seen.dropped is not None and not listed:
         seen.dropped.append(" ".join((shown or fragment).split()).strip(" ,.!?;:"))
-    return True
+    return not (listed and seen.only_general)
 
 
 def _label_restated(label: str, after: str, names: frozenset[str]) -> str:
@@ -296,38 +308,41 @@ def _label_restated(label: str, after: str, names: frozenset[str]) -> str:
     return re.sub(r"[A-Za-z]+", said_again, label).strip()
 
 
-def heads_dropped(sentence: str, header: bool = False, seen: Dropped = Dropped()) -> str:
+def heads_dropped(sentence: str, header: bool = False, seen: Dropped = _NOTHING_SEEN) -> str:
     """The sentence without its empty labels ("Re: ...:", "Copy that: ...", a label that only says again
     what the sentence under it names: "Carrot duty:") and its empty leading phrases ("Okay robot, ...",
     "Hey arms, uh, ...")."""
     while True:
         label = _LABEL.match(sentence) or _DASHED.match(sentence)
         bare = _label_restated(label.group(1), sentence[label.end() :], seen.names) if label else ""
-        named = label and bare != label.group(1)
-        is_label = label and (named or empty(bare, label=True, header=header, names=seen.names))
+        is_label = label is not None and empty(bare, label=True, header=header, names=seen.names)
         head = label if is_label else _LEAD.match(sentence)
         if head is None:
             break
         said = head.group(1)
-        lead = head is not label
-        if lead and not (_gone(said, seen, edge=True, lead=True, header=header) or _called(said)):
-            break
-        if not lead and not _gone(bare, seen, shown=said, label=True, header=header) and not (
-            named and empty(bare, label=True, header=header, names=seen.names)
-        ):
+        if head is label:
+            # a reader with its own labels (`only_general`: the tabletop's fields, methods, checklists)
+            # loses a label only where it restates its sentence's names or numbers the text's header
+            kept = seen.only_general and bare == said and not (header and re.search(r"\d", said))
+            if kept or not frame_gone(bare, seen, shown=said, label=True, header=header):
+                break
+        elif not (frame_gone(said, seen, edge=True, lead=True, header=header) or _called(said)):
             break
         sentence = sentence[head.end() :]
     return sentence
 
 
-def tails_dropped(sentence: str, seen: Dropped = Dropped()) -> str:
+def tails_dropped(sentence: str, seen: Dropped = _NOTHING_SEEN) -> str:
     """The sentence without an empty phrase at its end ("..., over") or set off by commas inside it."""
     tail = _TAIL.search(sentence)
-    if tail and _gone(tail.group(1), seen, edge=True):
+    # (what a tail leaves must be a clause, not a turn phrase of three words or fewer: "That done, relax")
+    if tail and len(sentence[: tail.start()].split()) > 3 and frame_gone(tail.group(1), seen, edge=True):
         sentence = sentence[: tail.start()]
     # and a phrase set off by commas inside it ("then, robots, put ..."); a hesitation ("the three, uh, the
     # three objects") stays, for `handover_spoken` to tell a phrase said again from a correction
-    return _INNER.sub(lambda m: "," if not _hesitation(m[1]) and _gone(m[1], seen, edge=True) else m[0], sentence)
+    return _INNER.sub(
+        lambda m: "," if not _hesitation(m[1]) and frame_gone(m[1], seen, edge=True) else m[0], sentence
+    )
 
 
 def _unframed_sentence(sentence: str, header: bool = False, dropped: list[str] | None = None) -> str:
@@ -589,7 +604,7 @@ def _unsigned(sentences: list[str], dropped: list[str] | None = None) -> list[st
     if len(sentences) > 1 and _name(sentences[-1]) and empty(sentences[-2], whole=True):
         return sentences[:-1]
     signed = re.fullmatch(r"(.+),([^,]+)", sentences[-1]) if sentences else None
-    if signed and _name(signed[2]) and _gone(signed[1], Dropped(dropped)):
+    if signed and _name(signed[2]) and frame_gone(signed[1], Dropped(dropped)):
         return sentences[:-1]
     return sentences
 
@@ -607,12 +622,12 @@ def plain(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
     filler rule dropped is added to `dropped`, where given."""
     out = []
     for k, sentence in enumerate(_unsigned(sentences, dropped)):
-        if _gone(sentence, Dropped(dropped), whole=True, header=k == 0) or _START_SIGNAL.match(sentence):
+        if frame_gone(sentence, Dropped(dropped), whole=True, header=k == 0) or _START_SIGNAL.match(sentence):
             continue
         if k == 0 and _called(sentence.rstrip(" ,.!:")):  # a letter's greeting on its own: "Dear Sam,"
             continue
         text = _unframed_sentence(sentence, header=k == 0, dropped=dropped)
         text = _unframed_sentence(first_person_as_team(unreported(text)), header=k == 0, dropped=dropped)
-        if text.strip() and not _gone(text, Dropped(dropped), whole=True, header=k == 0):
+        if text.strip() and not frame_gone(text, Dropped(dropped), whole=True, header=k == 0):
             out.append(text)
     return out

@@ -32,7 +32,7 @@ from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.courtesy import without_greetings
 from nl2hltl2plan.language.handover_discourse import (
     Dropped,
-    empty,
+    frame_gone,
     frame_note,
     frame_words,
     heads_dropped,
@@ -94,7 +94,7 @@ def _document_label_dropped(text: str) -> str:
     return text[label.end() :]
 
 
-_SENTENCE_END = re.compile(r"(?<=[.!?])\s+")
+_SENTENCE_END = re.compile(r"(?<=[A-Za-z][.!?])\s+")  # not after a list's number ("1. Carrot ...")
 # a record's kind and number opening the text ("Level 1:", "Cabin 4,"): a header unless the kind numbers
 # another part of the text too ("Task 1: ... Task 2: ...": the steps' labels)
 _NUMBERED = re.compile(r"^\s*(?:[A-Za-z]+\s+){0,2}?([A-Za-z]+)\s+(?:no\.?\s+|number\s+)?#?\d+\b")
@@ -102,19 +102,17 @@ _NUMBERED = re.compile(r"^\s*(?:[A-Za-z]+\s+){0,2}?([A-Za-z]+)\s+(?:no\.?\s+|num
 
 def frames_dropped(text: str, kinds: dict[str, bool], dropped: list[str] | None = None) -> str:
     """`text` without the sentences, labels, leading and closing phrases that name nothing a task needs,
-    by the handover reader's rule (`handover_discourse.empty`, with the world's names as content words): "Breathe
-    in, friends.", "Campers, ...", "..., buddies!", "Carrot duty: the carrot goes ..."; what only the
+    by the handover reader's rule (`handover_discourse.empty`, the world's names as content words):
+    "Breathe in, friends.", "Campers, ...", "..., buddies!", "Carrot duty: the carrot goes ..."; what only the
     general filler rule drops is added to `dropped`."""
-    seen = Dropped(dropped, frozenset(w for name in kinds for w in name.lower().split()))
+    seen = Dropped(dropped, frozenset(w for name in kinds for w in name.lower().split()), only_general=True)
     sentences = _SENTENCE_END.split(text.strip())
     kind = _NUMBERED.match(sentences[0]) if sentences else None
     again = kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[kind.end() :], re.IGNORECASE)
     out = []
     for k, sentence in enumerate(sentences):
         header = k == 0 and not again
-        if empty(sentence, whole=True, header=header, names=seen.names):
-            if dropped is not None and not empty(sentence, whole=True, header=header, general=False, names=seen.names):
-                dropped.append(sentence.strip(" .!?"))
+        if frame_gone(sentence, seen, whole=True, header=header):
             continue
         said = tails_dropped(heads_dropped(sentence, header, seen), seen).strip()
         end = sentence.rstrip()[-1:]
