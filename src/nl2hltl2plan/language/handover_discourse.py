@@ -6,10 +6,15 @@ spec can use are dropped, and reported speech and first-person narration become 
   no content word at all (no block, place, arm letter, count, negation, order, time or placing verb:
   `MEANING`, `VERB`, `content_words.txt`) and every word of it is a function word or a frame word of
   `handover_frame_words.txt` (a greeting, an acknowledgement, a memo's or message's header, "today's", a
-  radio call, a filler, a cheer, a sign-off). "Roger.", "Will do.", "Re: today's job.", "Base to arms,
-  come in.", "Okay robot, ...", "Good morning - ...", "Thanks a lot!" go;
-  "Subject: pillar move." (a block and a verb), "Tip: use arm c" (an arm), "Optional: ..." and "Tomorrow."
-  (words the frame does not know) stay, to be read or refused. Some frame words count only in one place:
+  radio call, a filler, a cheer, a sign-off) or general English filler (`filler`, h235: a word English
+  uses as more than a noun, outside a thing's or place's phrase; a noun only where it addresses the
+  listeners or in a label). "Roger.", "Will do.", "Re: today's job.", "Base to arms, come in.", "Okay
+  robot, ...", "Good morning - ...", "Thanks a lot!", "Best of luck!", "Campers, gather round!", "Drill 5:"
+  go; "Subject: pillar move." (a block and a verb), "Smash that button." (a thing's phrase), "Optional:
+  ...", "Tomorrow.", "The zebra too." (`frame_keeps.txt`) and "GG." (no English list knows it) stay, to be
+  read or refused. A label whose named words its sentence says again is its header ("Pillar job: move the
+  three pillars ..."). What only the general rule drops is said in the result's assumptions
+  (`frame_note`). Some frame words count only in one place:
   a label's words before a colon ("Steps:", "Procedure:", "Here's the idea:"), a greeting's time of day
   at a fragment's start ("Morning folks", not "this morning"), a whole sentence that ends a message
   ("Done.", "The end.", not "Done: move ..."), a record's kind with its identifier or a date in the
@@ -38,7 +43,7 @@ spec can use are dropped, and reported speech and first-person narration become 
     >>> plain(["She said the red block had to go first"])
     ['the red block must go first']
     >>> plain(["Subject: pillar move", "Tip: use arm c"])
-    ['pillar move', 'Tip: use arm c']
+    ['pillar move', 'use arm c']
 """
 
 from __future__ import annotations
@@ -47,11 +52,11 @@ import re
 from functools import lru_cache
 from typing import NamedTuple
 
-from nl2hltl2plan.language.content_words import LOCATIVE, OBJECT_START, vocabulary, word_categories
+from nl2hltl2plan.language.content_words import vocabulary, word_categories
 from nl2hltl2plan.language.courtesy import courtesy_pattern, courtesy_words
+from nl2hltl2plan.language.frame_filler import Dropped, filler
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
-from nl2hltl2plan.language.spelling import english_lemmas, english_word
 
 # words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
 MEANING = re.compile(
@@ -215,70 +220,12 @@ _DO_IT = re.compile(r"\b(?:do|does|did)\s+it\b(?!\s+(?:again|twice|\d))")
 _A_ONE = re.compile(r"\ban?\s+([a-z]+)\s+one\b")
 _PARTS = re.compile(r",|;|\s[-–—]+\s")  # what sets a part of a fragment off
 _SEP = "qqpartqq"  # the mark of a part's end while the fragment is read as words
-# what opens a thing's name or a place: after one of these, a word may name what is moved or where to
-_THING_BEFORE = OBJECT_START | LOCATIVE - {"of"} | frozenset("to into onto toward towards".split())
-
-
-@lru_cache(maxsize=1)
-def _keeps() -> frozenset[str]:
-    return frozenset().union(*word_categories("frame_keeps.txt").values())
-
-
-@lru_cache(maxsize=16384)
-def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool = False) -> bool:
-    """Whether `words[k]`, a word of a fragment that holds no content word, is general English filler
-    that names nothing a task needs (h235): a word English knows that is used as something other than a
-    noun ("luck", "easy", "gather", "lovely"), never after a determiner or a place's preposition (where it
-    may name a thing: "smash that button", "put it on the zebra"); a noun alone only where it addresses
-    the listeners, set off by a comma: a group ("campers", "buddies") or after "my" / "dear" ("my dears").
-    A word no list of English knows ("gg", a misspelt name) and a word that adds a thing ("too",
-    `frame_keeps.txt`: "the zebra too") are never filler.
-
-    >>> filler(("best", "of", "luck"), 2), filler(("the", "zebra"), 1), filler(("zebra",), 0)
-    (True, False, False)
-    >>> filler(("campers",), 0, set_off=True), filler(("campers",), 0)
-    (True, False)
-    """
-    word = words[k]
-    if word in _keeps() or word.isdigit() or not english_word(word):
-        return False
-    vocative = set_off and k > 0 and words[k - 1] in ("my", "dear")
-    if any(w in _THING_BEFORE for w in words[:k]) and not vocative:
-        return False
-    kinds = english_lemmas(word)
-    if word.endswith("ly") and "ADV" in kinds:  # how or in what order: "respectively", "sequentially"
-        return False
-    if set(kinds) - {"NOUN", "PROPN"}:
-        return True
-    # a plural: "campers", "buddies", "gamers" (a word the lexicon lacks, whose singular English knows)
-    group = any(lemma != word for lemma in kinds.get("NOUN", ())) or (
-        not kinds and word.endswith("s") and english_word(word[:-1])
-    )
-    return address or (set_off and (group or vocative))
-
-
 _LABEL = re.compile(r"^\s*([^:]{1,60}?)\s*:\s*(?=\S)")
 # a label set off by a dash that says again what its sentence names ("Green apple stuff - put ...")
 _DASHED = re.compile(r"^\s*([^,:;]{1,40}?)\s+[-–—]+\s+(?=\S)")
 # (a dash sets a leading phrase off as a comma does: "Morning folks - ...")
 _LEAD = re.compile(r"^\s*([^,:]{1,40}?)\s*(?:,|\s[-–—]+\s|[–—])\s*(?=\S)")
 _TAIL = re.compile(r",\s*([^,:]{1,40}?)\s*$")
-
-
-def frame_note(dropped: list[str]) -> str:
-    """The note that says what the general filler rule dropped (every reader's wording)."""
-    return "dropped as frame (names nothing a task needs): " + ", ".join(map(repr, dict.fromkeys(dropped)))
-
-
-class Dropped(NamedTuple):
-    """Where the general filler rule's drops are written (`dropped`, shown in the result's notes), the
-    world's own names, each word a content word (`names`: "orange", "plate" in the tabletop world), and
-    whether only what the lists alone keep is dropped (`only_general`: a reader with its own policy for
-    listed greetings and thanks, the tabletop's `courtesy.without_greetings`)."""
-
-    dropped: list[str] | None = None
-    names: frozenset[str] = frozenset()
-    only_general: bool = False
 
 
 _NOTHING_SEEN = Dropped()

@@ -46,10 +46,11 @@ import re
 import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.frame_filler import frame_note
 from nl2hltl2plan.language.handover_answers import answered, fragments_joined, timing_joined
 from nl2hltl2plan.language.handover_closing import check_closing, closing_said
 from nl2hltl2plan.language.handover_cues import restate
-from nl2hltl2plan.language.handover_discourse import frame_note, plain
+from nl2hltl2plan.language.handover_discourse import plain
 from nl2hltl2plan.language.handover_goals import (
     Clause,
     Goal,

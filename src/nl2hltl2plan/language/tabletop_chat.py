@@ -15,7 +15,11 @@ Read before any reader sees the text (`TabletopReader.as_read`), each as the pla
   the subject itself ("the orange can go in the yellow plate"; h229): the pronouns and the verbs after them
   are `tabletop_chat.txt`'s `resumptive` and `goes`;
 - a label that names the document and opens the text ("Puzzle #1:", "Exercise 2.", "Rules of play:") is
-  removed where it labels nothing else in the text (the frame lists' `record` and `title`).
+  removed where it labels nothing else in the text (the frame lists' `record` and `title`);
+- a sentence, leading or closing phrase that names nothing a task needs ("Breathe in, friends.", "Campers,
+  ...", "..., buddies!", "Yo chat, level 1: ...") and a label that says again its sentence's names
+  ("Carrot duty: the carrot goes ...") are removed by every reader's general filler rule
+  (`frames_dropped`: `handover_discourse.empty`, `frame_filler`, h235), and said in the result's notes.
 
 Chat shorthand ("n" for "and", "u" for "you") is read before, in every world (`spelling.shorthand_read`).
 The words of a leave are `tabletop_chat.txt`'s.
@@ -30,14 +34,8 @@ import re
 
 from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.courtesy import without_greetings
-from nl2hltl2plan.language.handover_discourse import (
-    Dropped,
-    frame_gone,
-    frame_note,
-    frame_words,
-    heads_dropped,
-    tails_dropped,
-)
+from nl2hltl2plan.language.frame_filler import Dropped
+from nl2hltl2plan.language.handover_discourse import frame_gone, frame_words, heads_dropped, tails_dropped
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
 _FIND = re.compile(
@@ -120,17 +118,11 @@ def frames_dropped(text: str, kinds: dict[str, bool], dropped: list[str] | None 
     return " ".join(s for s in out if s)
 
 
-def frame_notes(text: str, kinds: dict[str, bool]) -> list[str]:
-    """The note that says what `frames_dropped` dropped by the general filler rule, if anything."""
-    dropped: list[str] = []
-    frames_dropped(text, kinds, dropped)
-    return [frame_note(dropped)] if dropped else []
-
-
-def chat_read(text: str, kinds: dict[str, bool]) -> str:
+def chat_read(text: str, kinds: dict[str, bool], dropped: list[str] | None = None) -> str:
     """`text` with its chat forms read as plain words (see the module docstring); `kinds`: each object or
-    plate name in words -> is it a plate (a sign-off's name that is a word of one stays)."""
-    text = frames_dropped(_document_label_dropped(text), kinds)
+    plate name in words -> is it a plate (a sign-off's name that is a word of one stays); what the general
+    filler rule drops is added to `dropped`."""
+    text = frames_dropped(_document_label_dropped(text), kinds, dropped)
     text = _FIND.sub(lambda m: f"{m['order']} you like", text)
     text = _YOURS.sub(lambda m: f"{m['head']} they're {m['all'] or 'all'} there", text)  # "in there": there
     text = _ON_IT.sub(r"\g<head>there", text)
