@@ -271,7 +271,11 @@ def heads_dropped(sentence: str, header: bool = False, seen: Dropped = _NOTHING_
             # a reader with its own labels (`only_general`: the tabletop's fields, methods, checklists)
             # loses a label only where it restates its sentence's names or numbers the text's header
             kept = seen.only_general and bare == said and not (header and re.search(r"\d", said))
-            if kept or not frame_gone(bare, seen, shown=said, label=True, header=header):
+            # a label only the general rule empties heads a command ("Morning activity: move ..."); one
+            # before words with no verb is a field's name ("Target: region I, all three blocks")
+            general = not empty(bare, label=True, header=header, general=False, names=seen.names)
+            field = general and not _ACTION.search(sentence[head.end() :].lower())
+            if kept or field or not frame_gone(bare, seen, shown=said, label=True, header=header):
                 break
         elif not (frame_gone(said, seen, edge=True, lead=True, header=header) or _called(said)):
             break
