@@ -11,10 +11,11 @@ spec can use are dropped, and reported speech and first-person narration become 
   listeners or in a label). "Roger.", "Will do.", "Re: today's job.", "Base to arms, come in.", "Okay
   robot, ...", "Good morning - ...", "Thanks a lot!", "Best of luck!", "Campers, gather round!", "Drill 5:"
   go; "Subject: pillar move." (a block and a verb), "Smash that button." (a thing's phrase), "Optional:
-  ...", "Tomorrow.", "The zebra too." (`frame_keeps.txt`) and "GG." (no English list knows it) stay, to be
-  read or refused. A label whose named words its sentence says again is its header ("Pillar job: move the
-  three pillars ..."). What only the general rule drops is said in the result's assumptions
-  (`frame_note`). Some frame words count only in one place:
+  ...", "Tomorrow.", "The zebra too." (`frame_keeps.txt`), "GG." (no English list knows it), a question
+  that asks for something ("What should the arms do?"), a field's name before words with no verb ("Tip:
+  use arm c", "Target: region I") stay, to be read or refused. A label whose named words its sentence says
+  again is its header ("Pillar job: move the three pillars ..."). What only the general rule drops is said
+  in the result's assumptions (`frame_note`). Some frame words count only in one place:
   a label's words before a colon ("Steps:", "Procedure:", "Here's the idea:"), a greeting's time of day
   at a fragment's start ("Morning folks", not "this morning"), a whole sentence that ends a message
   ("Done.", "The end.", not "Done: move ..."), a record's kind with its identifier or a date in the
@@ -43,7 +44,7 @@ spec can use are dropped, and reported speech and first-person narration become 
     >>> plain(["She said the red block had to go first"])
     ['the red block must go first']
     >>> plain(["Subject: pillar move", "Tip: use arm c"])
-    ['pillar move', 'use arm c']
+    ['pillar move', 'Tip: use arm c']
 """
 
 from __future__ import annotations
@@ -166,6 +167,7 @@ def empty(
     (True, False, True, False)
     """
     frame = _frame()
+    general = general and not _ASKED.search(fragment)
     text = re.sub(r"#\s*\d+\b", " ", fragment.lower().replace("’", "'"))  # "#212": a ticket's number
     text = " ".join(re.sub(r"[^a-z0-9#]+", " ", _PARTS.sub(f" {_SEP} ", text)).split())
     if whole and " ".join(text.replace(_SEP, " ").split()) in frame.alone:
@@ -208,8 +210,18 @@ def empty(
 _RECORD = re.compile(r"\b((?:[a-z]+\s+){0,2}?[a-z]+)\s+(?:no\s+|number\s+)?\d+\b")
 
 
+# a question that asks for something ("What should the arms do?"): its answer may be what a task needs,
+# so only the frame lists may drop it
+_ASKED = re.compile(
+    r"(?i)\b(?:what|which|where|how|who|whom|when|why)\b[^.!]*\?|^\W*(?:what|which|where|how|who|whom|when|why)\s+"
+    r"(?:should|shall|do|does|did|is|are|was|were|can|could|will|would|must|might|may)\b"
+)
+
+
 def _record_kind(words: str) -> bool:
     said = tuple(words.split())
+    if said[-1] in frame_words()["function"]:  # "1 of 3": a count, no record's kind
+        return False
     return not MEANING.search(words) and all(
         not _content_word(w) and (w in _frame().single or filler(said, k, address=True))
         for k, w in enumerate(said)
