@@ -9,6 +9,7 @@ The words that keep a fragment (they add a thing, wait, hedge, say a time or an 
 
 from __future__ import annotations
 
+import re
 from functools import lru_cache
 from typing import NamedTuple
 
@@ -71,3 +72,22 @@ class Dropped(NamedTuple):
     dropped: list[str] | None = None
     names: frozenset[str] = frozenset()
     only_general: bool = False
+
+
+PART_BREAK = re.compile(r",|;|\s[-–—]+\s")  # what sets a part of a fragment off
+PART_END = "qqpartqq"  # the mark of a part's end among a fragment's words
+
+
+def parts_of(kept: list[str], marked: list[str]) -> list[tuple[str, ...]]:
+    """The words `kept` of a fragment (its words in order, some dropped) grouped by the parts that commas
+    and dashes set off in it (`marked`: all its words, each part's end marked)."""
+    parts: list[list[str]] = [[]]
+    at = 0
+    for word in kept:
+        while at < len(marked) and marked[at] != word:
+            if marked[at] == PART_END:
+                parts.append([])
+            at += 1
+        parts[-1].append(word)
+        at += 1
+    return [tuple(p) for p in parts if p]

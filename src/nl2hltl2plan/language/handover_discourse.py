@@ -55,7 +55,7 @@ from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import vocabulary, word_categories
 from nl2hltl2plan.language.courtesy import courtesy_pattern, courtesy_words
-from nl2hltl2plan.language.frame_filler import Dropped, filler
+from nl2hltl2plan.language.frame_filler import PART_BREAK, PART_END, Dropped, filler, parts_of
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
 
@@ -169,8 +169,9 @@ def empty(
     frame = _frame()
     general = general and not _ASKED.search(fragment)
     text = re.sub(r"#\s*\d+\b", " ", fragment.lower().replace("’", "'"))  # "#212": a ticket's number
-    text = " ".join(re.sub(r"[^a-z0-9#]+", " ", _PARTS.sub(f" {_SEP} ", text)).split())
-    if whole and " ".join(text.replace(_SEP, " ").split()) in frame.alone:
+    marked = re.findall(r"[a-z0-9#]+", PART_BREAK.sub(f" {PART_END} ", text))  # each part's end marked
+    text = " ".join(re.sub(r"[^a-z0-9#]+", " ", text).split())
+    if whole and text in frame.alone:
         return True
     text = frame.opening.sub(" ", text)
     if header:
@@ -186,7 +187,7 @@ def empty(
         text = _A_ONE.sub(lambda m: m[0] if _content_word(m[1]) else " ", _DO_IT.sub(" ", text))
     if MEANING.search(text) or _ACTION.search(text):
         return False
-    parts = [tuple(re.findall(r"[a-z0-9]+", part)) for part in text.split(_SEP)]
+    parts = parts_of(re.findall(r"[a-z0-9]+", text), marked)
     set_off = edge or len(parts) > 1  # a part set off by a comma or dash may address the listeners
 
     def said(ws: tuple[str, ...], k: int) -> bool:
@@ -230,8 +231,6 @@ def _record_kind(words: str) -> bool:
 
 _DO_IT = re.compile(r"\b(?:do|does|did)\s+it\b(?!\s+(?:again|twice|\d))")
 _A_ONE = re.compile(r"\ban?\s+([a-z]+)\s+one\b")
-_PARTS = re.compile(r",|;|\s[-–—]+\s")  # what sets a part of a fragment off
-_SEP = "qqpartqq"  # the mark of a part's end while the fragment is read as words
 _LABEL = re.compile(r"^\s*([^:]{1,60}?)\s*:\s*(?=\S)")
 # a label set off by a dash that says again what its sentence names ("Green apple stuff - put ...")
 _DASHED = re.compile(r"^\s*([^,:;]{1,40}?)\s+[-–—]+\s+(?=\S)")
@@ -298,8 +297,12 @@ def heads_dropped(sentence: str, header: bool = False, seen: Dropped = _NOTHING_
 def tails_dropped(sentence: str, seen: Dropped = _NOTHING_SEEN) -> str:
     """The sentence without an empty phrase at its end ("..., over") or set off by commas inside it."""
     tail = _TAIL.search(sentence)
-    # (what a tail leaves must be a clause, not a turn phrase of three words or fewer: "That done, relax")
-    if tail and len(sentence[: tail.start()].split()) > 3 and frame_gone(tail.group(1), seen, edge=True):
+    # (what only the general rule drops must leave a clause, not a turn phrase of three words or fewer:
+    # "That done, relax")
+    short = tail is not None and len(sentence[: tail.start()].split()) <= 3
+    if short and tail and not empty(tail.group(1), edge=True, general=False, names=seen.names):
+        tail = None
+    if tail and frame_gone(tail.group(1), seen, edge=True):
         sentence = sentence[: tail.start()]
     # and a phrase set off by commas inside it ("then, robots, put ..."); a hesitation ("the three, uh, the
     # three objects") stays, for `handover_spoken` to tell a phrase said again from a correction

@@ -256,8 +256,7 @@ class TabletopReader:
             return True
 
     def notes(self, instruction: str) -> list[str]:
-        """What the general filler rule dropped as frame when the lines were read (`as_read`); its
-        spellings of names ("grean apple") are the respelling notes' own."""
+        """What the general filler rule dropped as frame in `as_read` (respellings have their own notes)."""
         return [frame_note(self.frames)] if self.frames else []
 
     def unused(self, res: LanguageResult) -> list[Unread]:
