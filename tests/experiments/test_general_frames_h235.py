@@ -76,7 +76,7 @@ def test_filler_is_told_from_a_word_that_may_name_a_thing() -> None:
 def test_what_the_general_rule_drops_is_said_in_the_result() -> None:
     text = STYLES["dev_h235"]["camp_counsellor"]["1"]
     result = translate(text, instance(HANDOVER[1], 0, 0).as_world())
-    assert any("'Campers, gather round'" in a and "dropped as frame" in a for a in result.assumptions)
+    assert any("'Campers'" in a and "dropped as frame" in a for a in result.assumptions)
     plain = translate(PLACEMENT, instance(HANDOVER[2], 0, 0).as_world())
     assert not any("dropped as frame" in a for a in plain.assumptions)
 
@@ -100,10 +100,10 @@ def test_a_tabletop_label_that_names_no_object_of_its_sentence_stays() -> None:
     text = "Carrot duty: put the orange on the yellow plate."
     assert frames_dropped(text, kinds) == text
     dropped: list[str] = []
-    assert frames_dropped("Campers, gather round! " + text[13:], kinds, dropped) == text[13:]
-    assert dropped == ["Campers, gather round"]
-    result = translate("Campers, gather round! Put the orange on the yellow plate.", load_world("tabletop"))
-    assert any("'Campers, gather round'" in a for a in result.assumptions)
+    assert frames_dropped("Breathe in, friends. " + text[13:], kinds, dropped) == text[13:]
+    assert dropped == ["Breathe in, friends"]
+    result = translate("Breathe in, friends. Put the orange on the yellow plate.", load_world("tabletop"))
+    assert any("'Breathe in, friends'" in a for a in result.assumptions)
 
 
 @pytest.mark.data

@@ -113,6 +113,8 @@ def frames_dropped(text: str, kinds: dict[str, bool], dropped: list[str] | None 
         if frame_gone(sentence, seen, whole=True, header=header):
             continue
         said = tails_dropped(heads_dropped(sentence, header, seen), seen).strip()
+        if said != sentence.strip() and frame_gone(said, seen, whole=True, header=header):
+            continue  # what is left of it is frame too ("Campers, gather round!": "gather round!")
         end = sentence.rstrip()[-1:]
         out.append(said + end if end in ".!?" and not said.endswith(end) else said)
     return " ".join(s for s in out if s)
