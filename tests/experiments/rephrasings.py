@@ -2620,3 +2620,87 @@ HELD_H233: dict[str, dict[int, list[str]]] = {
             "sequencing is flexible."],
     },
 }
+
+
+# h235 (session 31, issues 24 and 28): held out. The four tasks in two voices of my own (a stage magician, a
+# ward nurse) whose frames are words no frame list holds ("Ta-da!", "Abracadabra!", "Trick number 2:",
+# "Ward round, bed 2:", "There we go, poppet.", "Chin up, love."), and a label naming the first object
+# ("Carrot trick:"). Written with DEV_H235 and committed before any rule changed, scored once at the end.
+VALID_H235: dict[str, dict[int, list[str]]] = {
+    "magician": {
+        1: ["Ta-da! Put the green apple on the blue plate and the orange on the yellow plate. Abracadabra!"],
+        2: ["Trick number 2: put the red apple on the blue plate, the green apple on the pink plate and the "
+            "orange on the yellow plate, in any order. Behold!"],
+        3: ["Carrot trick: the carrot goes on the blue plate, the orange on the yellow plate, the green "
+            "apple "
+            "on the green plate and the red apple on the pink plate. Marvellous."],
+        4: ["Illusion 4, my lovely assistants: put the green apple and the orange in the yellow plate first, "
+            "then the carrot and the red apple in the blue plate, in either order. A round of applause!"],
+    },
+    "nurse_ward": {
+        1: ["Morning, sweetheart. Put the green apple on the blue plate and the orange on the yellow plate. "
+            "There we go, poppet."],
+        2: ["Ward round, bed 2: put the red apple on the blue plate, the green apple on the pink plate "
+            "and the "
+            "orange on the yellow plate, any order you like. Lovely, thanks, petal."],
+        3: ["Right then, my dears: the carrot goes on the blue plate, the orange on the yellow plate, the "
+            "green apple on the green plate and the red apple on the pink plate. Nice and gentle."],
+        4: ["Orange and green apple first, pet: both in the yellow plate. Once they're in, the carrot and "
+            "the "
+            "red apple go in the blue plate, either order. Chin up, love."],
+    },
+}
+
+# h235 (session 31): the dev batch written with VALID_H235, in voices of my own (a yoga teacher, a camp
+# counsellor, a game streamer) and labels that name the object or plate of the sentences under them
+# ("Carrot duty:", "Green apple stuff -", "Yellow plate business:"); measured on first contact.
+DEV_H235: dict[str, dict[int, list[str]]] = {
+    "yoga_teacher": {
+        1: ["Breathe in, friends. Put the green apple on the blue plate and the orange on the yellow plate. "
+            "Namaste."],
+        2: ["Gently now, lovely people: put the red apple on the blue plate, the green apple on the pink "
+            "plate "
+            "and the orange on the yellow plate, in any order. Breathe out."],
+        3: ["Settle in, everybody. The carrot goes on the blue plate, the orange on the yellow plate, the "
+            "green "
+            "apple on the green plate and the red apple on the pink plate. Beautiful."],
+        4: ["Find your centre, friends. Put the green apple and the orange in the yellow plate first. "
+            "Then the "
+            "carrot and the red apple go into the blue plate, in either order. Wonderful practice."],
+    },
+    "camp_counsellor": {
+        1: ["Campers, gather round! Put the green apple on the blue plate and the orange on the yellow "
+            "plate. "
+            "Super job, campers!"],
+        2: ["Cabin 4, heads up: put the red apple on the blue plate, the green apple on the pink plate "
+            "and the "
+            "orange on the yellow plate, any order. Let's hustle, bunkmates!"],
+        3: ["Morning activity: the carrot goes on the blue plate, the orange on the yellow plate, the green "
+            "apple on the green plate and the red apple on the pink plate. High fives, kiddos!"],
+        4: ["Okay, buddies, put the green apple and the orange in the yellow plate first. After that, the "
+            "carrot and the red apple go into the blue plate, either order. Rock on, buddies!"],
+    },
+    "game_streamer": {
+        1: ["Yo chat, level 1: put the green apple on the blue plate and the orange on the yellow plate. "
+            "GG."],
+        2: ["What's up, gamers! Put the red apple on the blue plate, the green apple on the pink plate "
+            "and the "
+            "orange on the yellow plate, whatever order. Let's gooo!"],
+        3: ["Speedrun attempt 3: carrot on the blue plate, orange on the yellow plate, green apple on the "
+            "green plate, red apple on the pink plate. Clutch!"],
+        4: ["Boss fight, squad: the green apple and the orange go in the yellow plate first; once both "
+            "are in, "
+            "the carrot and the red apple go in the blue plate, either order. Peace out, chat."],
+    },
+    "object_labels": {
+        1: ["Green apple stuff - put the green apple on the blue plate. Orange stuff - put the orange on the "
+            "yellow plate."],
+        2: ["Apple jobs: put the red apple on the blue plate and the green apple on the pink plate. Orange "
+            "job: put the orange on the yellow plate. Any order."],
+        3: ["Carrot duty: the carrot goes on the blue plate. Orange duty: the orange goes on the yellow "
+            "plate. "
+            "Apple duty: the green apple goes on the green plate and the red apple on the pink plate."],
+        4: ["Yellow plate business: put the green apple and the orange in the yellow plate first. Blue plate "
+            "business: then put the carrot and the red apple in the blue plate, in either order."],
+    },
+}

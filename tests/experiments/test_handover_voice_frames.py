@@ -53,9 +53,9 @@ WRITTEN = [
 ]
 
 UNCLEAR = [
-    # a sign-off's "name" that is a word the reader knows; a farewell it does not know
+    # a sign-off's "name" that is a word the reader knows (a farewell no list holds, "Kisses, Sam", is general
+    # filler since h235: test_general_frames_h235)
     (1, "Transfer the three blocks to the opposite side, the red block before the blue block. Love, Red"),
-    (1, "Transfer the three blocks to the opposite side, the red block before the blue block. Kisses, Sam"),
     # "places" is the regions inside a clause: never a stage call
     (1, "Put the blocks in their places. The red block before the blue block."),
     # a count after its noun that is not the scene's

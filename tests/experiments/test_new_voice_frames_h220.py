@@ -35,10 +35,11 @@ WRITTEN = [
     (5, STYLES["dev104"]["chatty_aside"]["5"]),  # "What I'd love is for you to ..."
 ]
 
-# a frame word beside a word no list holds: the fragment is read or refused by name, never dropped
+# a frame word beside a word that may name something: the fragment is read or refused by name, never
+# dropped (h235: "sing along" alone, a verb with no object, is general filler; with an object it stays)
 UNCLEAR = [
     (1, "Ladies and gentlemen, juggle the three blocks to the opposite side, red before blue."),
-    (2, "Put the three blocks on H, I and J, one block per region. Nice and steady, sing along."),
+    (2, "Put the three blocks on H, I and J, one block per region. Nice and steady, sing a song."),
     (6, "Puzzle pieces: place the three objects on G, H and I, one per region. Red should be placed before "
         "blue."),
 ]

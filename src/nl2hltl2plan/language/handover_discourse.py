@@ -6,10 +6,16 @@ spec can use are dropped, and reported speech and first-person narration become 
   no content word at all (no block, place, arm letter, count, negation, order, time or placing verb:
   `MEANING`, `VERB`, `content_words.txt`) and every word of it is a function word or a frame word of
   `handover_frame_words.txt` (a greeting, an acknowledgement, a memo's or message's header, "today's", a
-  radio call, a filler, a cheer, a sign-off). "Roger.", "Will do.", "Re: today's job.", "Base to arms,
-  come in.", "Okay robot, ...", "Good morning - ...", "Thanks a lot!" go;
-  "Subject: pillar move." (a block and a verb), "Tip: use arm c" (an arm), "Optional: ..." and "Tomorrow."
-  (words the frame does not know) stay, to be read or refused. Some frame words count only in one place:
+  radio call, a filler, a cheer, a sign-off) or general English filler (`filler`, h235: a word English
+  uses as more than a noun, outside a thing's or place's phrase; a noun only where it addresses the
+  listeners or in a label). "Roger.", "Will do.", "Re: today's job.", "Base to arms, come in.", "Okay
+  robot, ...", "Good morning - ...", "Thanks a lot!", "Best of luck!", "Campers, gather round!", "Drill 5:"
+  go; "Subject: pillar move." (a block and a verb), "Smash that button." (a thing's phrase), "Optional:
+  ...", "Tomorrow.", "The zebra too." (`frame_keeps.txt`), "GG." (no English list knows it), a question
+  that asks for something ("What should the arms do?"), a field's name before words with no verb ("Tip:
+  use arm c", "Target: region I") stay, to be read or refused. A label whose named words its sentence says
+  again is its header ("Pillar job: move the three pillars ..."). What only the general rule drops is said
+  in the result's assumptions (`frame_note`). Some frame words count only in one place:
   a label's words before a colon ("Steps:", "Procedure:", "Here's the idea:"), a greeting's time of day
   at a fragment's start ("Morning folks", not "this morning"), a whole sentence that ends a message
   ("Done.", "The end.", not "Done: move ..."), a record's kind with its identifier or a date in the
@@ -49,6 +55,7 @@ from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import vocabulary, word_categories
 from nl2hltl2plan.language.courtesy import courtesy_pattern, courtesy_words
+from nl2hltl2plan.language.frame_filler import PART_BREAK, PART_END, Dropped, filler, parts_of
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
 
@@ -139,7 +146,16 @@ def _content_word(word: str) -> bool:
 
 
 @lru_cache(maxsize=16384)  # pure; a sentence is read again for each restated reading
-def empty(fragment: str, label: bool = False, whole: bool = False, header: bool = False) -> bool:
+def empty(
+    fragment: str,
+    label: bool = False,
+    whole: bool = False,
+    header: bool = False,
+    edge: bool = False,
+    lead: bool = False,
+    general: bool = True,
+    names: frozenset[str] = frozenset(),
+) -> bool:
     """True when the fragment says nothing a spec can use (see the module docstring); a `label` (before a
     colon) may also hold the words that announce the work ("Steps", "Here's the idea"), a `whole`
     sentence may also be one that ends the message ("Done."), and the instruction's `header` (its first
@@ -151,47 +167,155 @@ def empty(fragment: str, label: bool = False, whole: bool = False, header: bool 
     (True, False, True, False)
     """
     frame = _frame()
+    general = general and not _ASKED.search(fragment)
     text = re.sub(r"#\s*\d+\b", " ", fragment.lower().replace("’", "'"))  # "#212": a ticket's number
+    marked = re.findall(r"[a-z0-9#]+", PART_BREAK.sub(f" {PART_END} ", text))  # each part's end marked
     text = " ".join(re.sub(r"[^a-z0-9#]+", " ", text).split())
     if whole and text in frame.alone:
         return True
     text = frame.opening.sub(" ", text)
     if header:
         text = frame.records.sub(" ", text)
+        text = _RECORD.sub(lambda m: " " if general and _record_kind(m[1]) else m[0], text)
     text = " ".join(frame.phrases.sub(" ", text).split())
     if label:
         text = frame.label.sub(" ", text)
     text = _without_addressees(_CALL.sub(r"\1 ", text))
+    # "it" as the whole job ("can you do it", "easy does it") and "one" as a thing said of the job ("here's
+    # a tricky one") name nothing a task needs
+    if general:
+        text = _A_ONE.sub(lambda m: m[0] if _content_word(m[1]) else " ", _DO_IT.sub(" ", text))
     if MEANING.search(text) or _ACTION.search(text):
         return False
-    words = re.findall(r"[a-z0-9]+", text)
-    return all((w in frame.single or _HESITATION.fullmatch(w)) and not _content_word(w) for w in words)
+    parts = parts_of(re.findall(r"[a-z0-9]+", text), marked)
+    set_off = edge or len(parts) > 1  # a part set off by a comma or dash may address the listeners
+
+    def said(ws: tuple[str, ...], k: int) -> bool:
+        # a label's words, and a word alone that opens a sentence or stands beside another part ("Squad,
+        # ...", "Peace out, chat"), may be nouns: they name the document or the listeners
+        address = label or (set_off and len(ws) == 1 and (lead or len(parts) > 1))
+        return filler(ws, k, set_off, address)
+
+    def frame_word(ws: tuple[str, ...], k: int) -> bool:
+        w = ws[k]
+        if _content_word(w) or w in names:
+            return False
+        return w in frame.single or bool(_HESITATION.fullmatch(w)) or (general and said(ws, k))
+
+    return all(frame_word(ws, k) for ws in parts for k in range(len(ws)))
 
 
+# a record's kind and its number opening the text ("Drill 5", "Speedrun attempt 3", "Ward round, bed 2"):
+# any word English knows that says nothing a task needs, before a number (a letter may be a region: only the
+# listed kinds take one)
+_RECORD = re.compile(r"\b((?:[a-z]+\s+){0,2}?[a-z]+)\s+(?:no\s+|number\s+)?\d+\b")
+
+
+# a question that asks for something ("What should the arms do?"): its answer may be what a task needs,
+# so only the frame lists may drop it
+_ASKED = re.compile(
+    r"(?i)\b(?:what|which|where|how|who|whom|when|why)\b[^.!]*\?|^\W*(?:what|which|where|how|who|whom|when|why)\s+"
+    r"(?:should|shall|do|does|did|is|are|was|were|can|could|will|would|must|might|may)\b"
+)
+
+
+def _record_kind(words: str) -> bool:
+    said = tuple(words.split())
+    if said[-1] in frame_words()["function"]:  # "1 of 3": a count, no record's kind
+        return False
+    return not MEANING.search(words) and all(
+        not _content_word(w) and (w in _frame().single or filler(said, k, address=True))
+        for k, w in enumerate(said)
+    )
+
+
+_DO_IT = re.compile(r"\b(?:do|does|did)\s+it\b(?!\s+(?:again|twice|\d))")
+_A_ONE = re.compile(r"\ban?\s+([a-z]+)\s+one\b")
 _LABEL = re.compile(r"^\s*([^:]{1,60}?)\s*:\s*(?=\S)")
+# a label set off by a dash that says again what its sentence names ("Green apple stuff - put ...")
+_DASHED = re.compile(r"^\s*([^,:;]{1,40}?)\s+[-–—]+\s+(?=\S)")
 # (a dash sets a leading phrase off as a comma does: "Morning folks - ...")
 _LEAD = re.compile(r"^\s*([^,:]{1,40}?)\s*(?:,|\s[-–—]+\s|[–—])\s*(?=\S)")
 _TAIL = re.compile(r",\s*([^,:]{1,40}?)\s*$")
 
 
-def _unframed_sentence(sentence: str, header: bool = False) -> str:
-    """The sentence without its empty labels ("Re: ...:", "Copy that: ..."), its empty leading phrases
-    ("Okay robot, ...", "Hey arms, uh, ...") and an empty phrase at its end ("..., over")."""
+_NOTHING_SEEN = Dropped()
+
+
+def frame_gone(fragment: str, seen: Dropped, shown: str | None = None, **where: bool) -> bool:
+    """`empty(fragment, **where)`; a fragment that only the general filler rule finds empty is added to
+    `seen.dropped` (as `shown`, where the fragment was read without some of its words)."""
+    if not empty(fragment, names=seen.names, **where):
+        return False
+    listed = empty(fragment, general=False, names=seen.names, **where)
+    if seen.dropped is not None and not listed:
+        seen.dropped.append(" ".join((shown or fragment).split()).strip(" ,.!?;:"))
+    return not (listed and seen.only_general)
+
+
+def _label_restated(label: str, after: str, names: frozenset[str]) -> str:
+    """The label without its words that the sentence under it says again: "Carrot duty: the carrot goes
+    ..." is "duty", "Blue block stuff - put the blue block ..." is "stuff" (a header of what follows)."""
+    again = {form for w in re.findall(r"[a-z]+", after.lower()) for form in (w, w.removesuffix("s"))}
+
+    def said_again(m: re.Match[str]) -> str:
+        word = m[0].lower()
+        named = MEANING.fullmatch(word) or _content_word(word) or word in names
+        return " " if named and (word in again or word.removesuffix("s") in again) else m[0]
+
+    return re.sub(r"[A-Za-z]+", said_again, label).strip()
+
+
+def heads_dropped(sentence: str, header: bool = False, seen: Dropped = _NOTHING_SEEN) -> str:
+    """The sentence without its empty labels ("Re: ...:", "Copy that: ...", a label that only says again
+    what the sentence under it names: "Carrot duty:") and its empty leading phrases ("Okay robot, ...",
+    "Hey arms, uh, ...")."""
     while True:
-        label = _LABEL.match(sentence)
-        head = label if label and empty(label.group(1), label=True, header=header) else _LEAD.match(sentence)
+        label = _LABEL.match(sentence) or _DASHED.match(sentence)
+        bare = _label_restated(label.group(1), sentence[label.end() :], seen.names) if label else ""
+        is_label = label is not None and empty(bare, label=True, header=header, names=seen.names)
+        head = label if is_label else _LEAD.match(sentence)
         if head is None:
             break
-        if not (empty(head.group(1), label=head is label, header=header) or _called(head.group(1))):
+        said = head.group(1)
+        if head is label:
+            # a reader with its own labels (`only_general`: the tabletop's fields, methods, checklists)
+            # loses a label only where it restates its sentence's names or numbers the text's header
+            kept = seen.only_general and bare == said and not (header and re.search(r"\d", said))
+            # a label only the general rule empties heads a command ("Morning activity: move ..."); one
+            # before words with no verb is a field's name ("Target: region I, all three blocks")
+            general = not empty(bare, label=True, header=header, general=False, names=seen.names)
+            field = general and not _ACTION.search(sentence[head.end() :].lower())
+            if kept or field or not frame_gone(bare, seen, shown=said, label=True, header=header):
+                break
+        elif not (frame_gone(said, seen, edge=True, lead=True, header=header) or _called(said)):
             break
         sentence = sentence[head.end() :]
-    sentence = _unrelayed(_ASIDE.sub("", sentence))
+    return sentence
+
+
+def tails_dropped(sentence: str, seen: Dropped = _NOTHING_SEEN) -> str:
+    """The sentence without an empty phrase at its end ("..., over") or set off by commas inside it."""
     tail = _TAIL.search(sentence)
-    if tail and empty(tail.group(1)):
+    # (what only the general rule drops must leave a clause, not a turn phrase of three words or fewer:
+    # "That done, relax")
+    short = tail is not None and len(sentence[: tail.start()].split()) <= 3
+    if short and tail and not empty(tail.group(1), edge=True, general=False, names=seen.names):
+        tail = None
+    if tail and frame_gone(tail.group(1), seen, edge=True):
         sentence = sentence[: tail.start()]
     # and a phrase set off by commas inside it ("then, robots, put ..."); a hesitation ("the three, uh, the
     # three objects") stays, for `handover_spoken` to tell a phrase said again from a correction
-    return _INNER.sub(lambda m: "," if empty(m[1]) and not _hesitation(m[1]) else m[0], sentence)
+    return _INNER.sub(
+        lambda m: "," if not _hesitation(m[1]) and frame_gone(m[1], seen, edge=True) else m[0], sentence
+    )
+
+
+def _unframed_sentence(sentence: str, header: bool = False, dropped: list[str] | None = None) -> str:
+    """The sentence without its empty labels, leading phrases and phrases at its end, a relayed command
+    said as the command."""
+    seen = Dropped(dropped)
+    return tails_dropped(_unrelayed(_ASIDE.sub("", heads_dropped(sentence, header, seen))), seen)
 
 
 def _hesitation(fragment: str) -> bool:
@@ -440,13 +564,13 @@ def _name(text: str) -> bool:
     return bool(_NAME.match(text)) and not known
 
 
-def _unsigned(sentences: list[str]) -> list[str]:
+def _unsigned(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
     """The sentences without the writer's name that signs the empty sign-off ending them: "Best, Ana", or
     "Thanks," and then "Ana" on a line of its own."""
     if len(sentences) > 1 and _name(sentences[-1]) and empty(sentences[-2], whole=True):
         return sentences[:-1]
     signed = re.fullmatch(r"(.+),([^,]+)", sentences[-1]) if sentences else None
-    if signed and _name(signed[2]) and empty(signed[1]):
+    if signed and _name(signed[2]) and frame_gone(signed[1], Dropped(dropped)):
         return sentences[:-1]
     return sentences
 
@@ -458,17 +582,18 @@ _START_SIGNAL = re.compile(
 )
 
 
-def plain(sentences: list[str]) -> list[str]:
+def plain(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
     """The sentences with empty fragments, start signals and a sign-off's name dropped, reported speech and
-    first-person narration said as the team's commands (see the module docstring)."""
+    first-person narration said as the team's commands (see the module docstring); what only the general
+    filler rule dropped is added to `dropped`, where given."""
     out = []
-    for k, sentence in enumerate(_unsigned(sentences)):
-        if empty(sentence, whole=True, header=k == 0) or _START_SIGNAL.match(sentence):
+    for k, sentence in enumerate(_unsigned(sentences, dropped)):
+        if frame_gone(sentence, Dropped(dropped), whole=True, header=k == 0) or _START_SIGNAL.match(sentence):
             continue
         if k == 0 and _called(sentence.rstrip(" ,.!:")):  # a letter's greeting on its own: "Dear Sam,"
             continue
-        text = _unframed_sentence(sentence, header=k == 0)
-        text = _unframed_sentence(first_person_as_team(unreported(text)), header=k == 0)
-        if text.strip() and not empty(text, whole=True, header=k == 0):
+        text = _unframed_sentence(sentence, header=k == 0, dropped=dropped)
+        text = _unframed_sentence(first_person_as_team(unreported(text)), header=k == 0, dropped=dropped)
+        if text.strip() and not frame_gone(text, Dropped(dropped), whole=True, header=k == 0):
             out.append(text)
     return out

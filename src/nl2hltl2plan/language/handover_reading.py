@@ -46,6 +46,7 @@ import re
 import networkx as nx
 
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.frame_filler import frame_note
 from nl2hltl2plan.language.handover_answers import answered, fragments_joined, timing_joined
 from nl2hltl2plan.language.handover_closing import check_closing, closing_said
 from nl2hltl2plan.language.handover_cues import restate
@@ -85,12 +86,18 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     role's sign-off, a dialogue's turns, a work order's fields: `handover_headers.headed`)."""
     instruction = labelled_answers(headed(instruction))
     try:
-        return _read_forms(instruction, world)
+        result = _read_forms(instruction, world)
     except HTTError as refusal:
-        result = _restated(instruction, world)
-        if result is None:
+        restated = _restated(instruction, world)
+        if restated is None:
             raise refusal from None
+        result = restated
+    frames: list[str] = []  # what the general filler rule dropped, said so in the result (h235)
+    plain(split_sentences(answered(instruction)), frames)
+    if not frames:
         return result
+    note = frame_note(frames)
+    return result.model_copy(update={"assumptions": [*result.assumptions, note]})
 
 
 def _restated(instruction: str, world: World) -> LanguageResult | None:

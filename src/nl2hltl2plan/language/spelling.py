@@ -115,6 +115,15 @@ def english_word(word: str) -> bool:
     return bool(_english().known([word]))
 
 
+@cache
+def english_lemmas(word: str) -> dict[str, tuple[str, ...]]:
+    """The parts of speech English uses `word` as, each with its lemmas (lemminflect's lexicon): "luck":
+    {"NOUN": ("luck",), "VERB": ("luck",)}; {} for a word it does not hold."""
+    from lemminflect import getAllLemmas  # type: ignore[import-untyped]  # loads its tables on first use
+
+    return dict(getAllLemmas(word))
+
+
 def english_frequency(word: str) -> int:
     """How often English (pyspellchecker's frequency list) uses `word` (lower case; 0 where it does not)."""
     return int(_english().word_frequency[word])

@@ -25,6 +25,7 @@ from collections import Counter
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.content_words import Unread, take_backs, vocabulary
+from nl2hltl2plan.language.frame_filler import frame_note
 from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
 from nl2hltl2plan.language.headings import answered
@@ -169,6 +170,7 @@ class TabletopReader:
 
     def __init__(self, world: World) -> None:
         self.world = world
+        self.frames: list[str] = []
 
     def own_reading(self, instruction: str) -> LanguageResult | None:
         return None  # the shared grammar reads first (world_readers imports this module: no base class)
@@ -182,7 +184,8 @@ class TabletopReader:
         one asked (`tabletop_order.robot_addressed`); a clause that looks back on the step before as
         "then" (`tabletop_order.turn_phrases_read`)."""
         kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
-        text = names_spelt(stops_read(chat_read(lines_joined(lines, kinds), kinds)), kinds)
+        self.frames = []  # what the general filler rule drops, for `notes`
+        text = names_spelt(stops_read(chat_read(lines_joined(lines, kinds), kinds, self.frames)), kinds)
         text = bracketed_list_opened(text, kinds)  # "sort fruit (green apple -> pink plate, ...)"
         text = fields_read(text, kinds)  # "Object: ... Target: ...", "as follows:", "### Phase B (after A)"
         text = answered(text)  # "Q: Where does the green apple go? A: On the blue plate."
@@ -253,7 +256,8 @@ class TabletopReader:
             return True
 
     def notes(self, instruction: str) -> list[str]:
-        return []  # its spellings of names ("grean apple") are the respelling notes' own
+        """What the general filler rule dropped as frame in `as_read` (respellings have their own notes)."""
+        return [frame_note(self.frames)] if self.frames else []
 
     def unused(self, res: LanguageResult) -> list[Unread]:
         """Each object or plate the instruction names (outside its negated clauses) that no base task

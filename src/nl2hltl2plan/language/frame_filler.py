@@ -1,0 +1,93 @@
+"""General English filler in a frame (h235, issues 24 and 28): what tells a word that names nothing a task
+needs ("luck", "gather", "campers" addressed) from a word that may name a thing no table knows ("the zebra",
+"smash that button"), for every reader's frame rule (`handover_discourse.empty`), and how a dropped frame is
+said in a result (`frame_note`).
+
+The words that keep a fragment (they add a thing, wait, hedge, say a time or an order) are
+`frame_keeps.txt`'s; English is pyspellchecker's list and lemminflect's lexicon (`spelling`).
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+from typing import NamedTuple
+
+from nl2hltl2plan.language.content_words import LOCATIVE, OBJECT_START, word_categories
+from nl2hltl2plan.language.spelling import english_lemmas, english_word
+
+# what opens a thing's name or a place: after one of these, a word may name what is moved or where to
+_THING_BEFORE = OBJECT_START | LOCATIVE - {"of"} | frozenset("to into onto toward towards".split())
+
+
+@lru_cache(maxsize=1)
+def _keeps() -> frozenset[str]:
+    return frozenset().union(*word_categories("frame_keeps.txt").values())
+
+
+@lru_cache(maxsize=16384)
+def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool = False) -> bool:
+    """Whether `words[k]`, a word of a fragment that holds no content word, is general English filler
+    that names nothing a task needs (h235): a word English knows that is used as something other than a
+    noun ("luck", "easy", "gather", "lovely"), never after a determiner or a place's preposition (where it
+    may name a thing: "smash that button", "put it on the zebra"); a noun alone only where it addresses
+    the listeners, set off by a comma: a group ("campers", "buddies") or after "my" / "dear" ("my dears").
+    A word no list of English knows ("gg", a misspelt name) and a word that adds a thing ("too",
+    `frame_keeps.txt`: "the zebra too") are never filler.
+
+    >>> filler(("best", "of", "luck"), 2), filler(("the", "zebra"), 1), filler(("zebra",), 0)
+    (True, False, False)
+    >>> filler(("campers",), 0, set_off=True), filler(("campers",), 0)
+    (True, False)
+    """
+    word = words[k]
+    if word in _keeps() or word.isdigit() or not english_word(word):
+        return False
+    vocative = set_off and k > 0 and words[k - 1] in ("my", "dear")
+    if any(w in _THING_BEFORE for w in words[:k]) and not vocative:
+        return False
+    kinds = english_lemmas(word)
+    if word.endswith("ly") and "ADV" in kinds:  # how or in what order: "respectively", "sequentially"
+        return False
+    if set(kinds) - {"NOUN", "PROPN"}:
+        return True
+    # a plural: "campers", "buddies", "gamers" (a word the lexicon lacks, whose singular English knows)
+    group = any(lemma != word for lemma in kinds.get("NOUN", ())) or (
+        not kinds and word.endswith("s") and english_word(word[:-1])
+    )
+    return address or (set_off and (group or vocative))
+
+
+def frame_note(dropped: list[str]) -> str:
+    """The note that says what the general filler rule dropped (every reader's wording)."""
+    return "dropped as frame (names nothing a task needs): " + ", ".join(map(repr, dict.fromkeys(dropped)))
+
+
+class Dropped(NamedTuple):
+    """Where the general filler rule's drops are written (`dropped`, shown in the result's notes), the
+    world's own names, each word a content word (`names`: "orange", "plate" in the tabletop world), and
+    whether only what the lists alone keep is dropped (`only_general`: a reader with its own policy for
+    listed greetings and thanks, the tabletop's `courtesy.without_greetings`)."""
+
+    dropped: list[str] | None = None
+    names: frozenset[str] = frozenset()
+    only_general: bool = False
+
+
+PART_BREAK = re.compile(r",|;|\s[-–—]+\s")  # what sets a part of a fragment off
+PART_END = "qqpartqq"  # the mark of a part's end among a fragment's words
+
+
+def parts_of(kept: list[str], marked: list[str]) -> list[tuple[str, ...]]:
+    """The words `kept` of a fragment (its words in order, some dropped) grouped by the parts that commas
+    and dashes set off in it (`marked`: all its words, each part's end marked)."""
+    parts: list[list[str]] = [[]]
+    at = 0
+    for word in kept:
+        while at < len(marked) and marked[at] != word:
+            if marked[at] == PART_END:
+                parts.append([])
+            at += 1
+        parts[-1].append(word)
+        at += 1
+    return [tuple(p) for p in parts if p]
