@@ -83,10 +83,15 @@ def taken_out(instruction: str, mentions: list[Mention], parse: ParseUsage) -> l
 
 
 def _put_in_source(m: re.Match[str], types: set[str], mentions: list[Mention], parse: ParseUsage) -> bool:
-    """ "..., and take the mug out of the microwave" with no placing after: a task that puts the mug into
-    the microwave it is taken out of read the removal's own words as a placing (h242)."""
+    """ "..., and take the mug out of the microwave" with no placing after: a task of only these words that
+    puts the mug into the microwave it is taken out of read the removal as a placing (h242); "take the soap
+    out of the cabinet, wash it and return it" is a task of more words."""
     source = {t for x in mentions if m.end("thing") <= x.char_start < m.end() for t in x.entry.types}
-    return any(set(t.object) & types and set(t.receptacle or ()) & source for t in parse.tasks)
+    return any(
+        set(t.object) & types and set(t.receptacle or ()) & source and t.text.lower().strip() in m.group(0)
+        for t in parse.tasks
+        if t.text
+    )
 
 
 def returns_and_repeats(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
