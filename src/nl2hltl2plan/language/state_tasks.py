@@ -441,7 +441,7 @@ def treated_apart(tasks: Sequence[BaseTaskSpec]) -> list[Unread]:
     out = []
     for t in tasks:
         if t.kind in _TREATED and not t.receptacle and any(
-            o is not t and o.sliced == t.sliced and set(o.object) & set(t.object) for o in tasks
+            o.receptacle and o.sliced == t.sliced and set(o.object) & set(t.object) for o in tasks
         ):
             why = "a thing treated in one task and moved in another: say it once ('heat X and put it ...')"
             out.append(Unread(t.text or t.id, "action", why))
