@@ -338,6 +338,12 @@ KNOWN_WRONG: set[str] = {
     "Chill an apple and put it on the counter. Then slice another apple, heat a slice and put it in the "
     "fridge. Heat a slice of potato and wash a slice of lettuce, and put both slices on the white table next "
     "to the fork.",
+    # h242's dev half, left (read so on main too, none the new rules' shape): "microwave X" with no place read
+    # as a placing in the microwave (the structure model); "and the tomato too, but on the counter" keeps
+    # the place, not the chilling; "First A, and then B" inside one task still orders A before what follows
+    "Microwave the potato, then drop the tomato in the sink.",
+    "Chill the lettuce and put it in the sink, and the tomato too, but on the counter.",
+    "First heat the potato, and then put it in the fridge. Chill the apple and put it in the microwave.",
 }
 
 
