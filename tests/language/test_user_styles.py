@@ -347,6 +347,12 @@ KNOWN_WRONG: set[str] = {
     # h234's held-out remarks (scored once): the order is read; "the knife" of FloorPlan26 read as ButterKnife
     "Wash the knife and put it on the dining table, chill the lettuce and put it on the dining table, and "
     "warm up the mug and put it on the coffee machine. Do the lettuce once the others are finished.",
+    # h242's dev half, left (read so on main too, none the new rules' shape): "microwave X" with no place read
+    # as a placing in the microwave (the structure model); "and the tomato too, but on the counter" keeps
+    # the place, not the chilling; "First A, and then B" inside one task still orders A before what follows
+    "Microwave the potato, then drop the tomato in the sink.",
+    "Chill the lettuce and put it in the sink, and the tomato too, but on the counter.",
+    "First heat the potato, and then put it in the fridge. Chill the apple and put it in the microwave.",
 }
 
 

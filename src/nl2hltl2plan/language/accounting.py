@@ -360,8 +360,8 @@ def _invented(
     name ("standing" of "standing lamp") names it only where it names nothing as written (`in_mention`:
     the words of a named thing): the "plate" of "the yellow plate" never stands for the blue plate. A
     misspelt name names its slot once `everyday` has respelt it (`language.spelling`)."""
-    places = verb_places()
-    named = {places[f] for w, _, _ in toks for f in stems(w) if f in places}
+    verbs = [w for i, (w, _, _) in enumerate(toks) if i not in in_mention]  # "microwave the egg" (h242)
+    named = {p for w in verbs for f in stems(w) if (p := verb_places().get(f))}
     if any(c.startswith("state_lights_") for w, _, _ in toks for c in categories(w)):
         named.add("LightSwitch")  # "make the kitchen dark" names the room's lights
     sources: set[str] = set()  # named only as where a thing is or comes from: "take the mug out of the sink"

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 from nl2hltl2plan.errors import HTTError, WorldError
 from nl2hltl2plan.language.accounting import account
-from nl2hltl2plan.language.content_words import LOCATIVE, categories, stems, verb_places
+from nl2hltl2plan.language.content_words import LOCATIVE, Unread, categories, stems, verb_places
 from nl2hltl2plan.language.grounding import LAMPS, Grounder, find_mentions, tokens
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
@@ -428,3 +428,21 @@ def _fills(task: BaseTaskSpec, switch: BaseTaskSpec) -> bool:
     return bool(into & set(switch.object)) or (
         "Faucet" in switch.object and bool(into & {"SinkBasin", "Sink"})
     )
+
+
+_TREATED = ("clean_place", "cool_place", "heat_place")
+
+
+def treated_apart(tasks: Sequence[BaseTaskSpec]) -> list[Unread]:
+    """A treatment with no destination whose thing another task moves: "The cup and the pot both need
+    chilling, and the cup goes on the table" read as a chilling of the cup and a placing of it, two goals
+    for one cup (one says it stays in the fridge), where the words meant one task or left the pot's place
+    unsaid (h242); refused by name, never solved."""
+    out = []
+    for t in tasks:
+        if t.kind in _TREATED and not t.receptacle and any(
+            o.receptacle and o.sliced == t.sliced and set(o.object) & set(t.object) for o in tasks
+        ):
+            why = "a thing treated in one task and moved in another: say it once ('heat X and put it ...')"
+            out.append(Unread(t.text or t.id, "action", why))
+    return out

@@ -51,7 +51,14 @@ from nl2hltl2plan.language.restated_tasks import joined_restatements
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.spec_builder import GenerateLTL, build_spec
 from nl2hltl2plan.language.spelling import respelling_notes, shorthand_read
-from nl2hltl2plan.language.state_tasks import StateReader, guessed_slot, light_orders, reread, state_orderings
+from nl2hltl2plan.language.state_tasks import (
+    StateReader,
+    guessed_slot,
+    light_orders,
+    reread,
+    state_orderings,
+    treated_apart,
+)
 from nl2hltl2plan.language.suggest import not_understood, refuse_unmovable, suggestion_text
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
 from nl2hltl2plan.language.world_readers import world_reader
@@ -206,7 +213,7 @@ def account_words(
         instances = scene_instances(world)
     scene = world.name if world is not None else "the scene"
     unread = account(res.instruction, res.tasks, res.before, instances, scene, res.constraint_specs)
-    unread += unfilled_slots(res.tasks) + world_reader(world).unused(res)
+    unread += unfilled_slots(res.tasks) + treated_apart(res.tasks) + world_reader(world).unused(res)
     words = [str(u) for u in unread]
     return res.model_copy(update={"unparsed": [*res.unparsed, *words]}) if words else res
 

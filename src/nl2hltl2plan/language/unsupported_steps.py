@@ -74,9 +74,24 @@ def taken_out(instruction: str, mentions: list[Mention], parse: ParseUsage) -> l
         named = [x for x in mentions if start <= x.char_start < end]
         types = {t for x in named[:1] for t in x.entry.types}
         said_before = any(set(x.entry.types) & types for x in mentions if x.char_start < m.start())
-        if not (types & used and (not said_before or _PLACED_NEXT.match(lowered, m.end()))):
+        placed_next = _PLACED_NEXT.match(lowered, m.end())
+        if not (types & used and (not said_before or placed_next)) or (
+            not placed_next and _put_in_source(m, types, mentions, parse)
+        ):
             out.append(Unread(m.group(0).strip(), "action", _REMOVAL))
     return out
+
+
+def _put_in_source(m: re.Match[str], types: set[str], mentions: list[Mention], parse: ParseUsage) -> bool:
+    """ "..., and take the mug out of the microwave" with no placing after: a task of only these words that
+    puts the mug into the microwave it is taken out of read the removal as a placing (h242); "take the soap
+    out of the cabinet, wash it and return it" is a task of more words."""
+    source = {t for x in mentions if m.end("thing") <= x.char_start < m.end() for t in x.entry.types}
+    return any(
+        set(t.object) & types and set(t.receptacle or ()) & source and t.text.lower().strip() in m.group(0)
+        for t in parse.tasks
+        if t.text
+    )
 
 
 def returns_and_repeats(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
