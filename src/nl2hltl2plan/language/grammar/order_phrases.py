@@ -556,7 +556,7 @@ _AND_THEN_STATE = re.compile(
 
 
 # "A and B - the end table ones go first": a closing order set off by a dash is a sentence of its own, which
-# names its tasks (`word_tables.FIRST_LAST_SENTENCE`; h190)
+# names its tasks (`order_remarks.FIRST_LAST_SENTENCE`; h190)
 _DASHED_FIRST = re.compile(
     r"\s+[-\u2013\u2014]\s+(?=(?:do\s+)?(?:the|that|this)\s+[a-z][a-z\s]*?\s+(?:first|last)\s*[.!]?\s*$)",
     re.I,

@@ -12,6 +12,7 @@ import re
 from functools import cache
 from pathlib import Path
 
+from nl2hltl2plan.language.content_words import free_order_phrase
 from nl2hltl2plan.language.grammar import word_tables as G
 
 # a thing that names a task: one to four words, no verb (but a treatment's "-ing") and no preposition, so
@@ -32,6 +33,27 @@ _DONE = r"(?:is|are|has\s+been|have\s+been)\s+(?:done|finished|complete|complete
 # the treatments whose verb may open a remark ("Rinse the soap before anything else.")
 _TREATING = frozenset({"clean", "heat", "cool"})
 _PARTS = re.compile(r"\s*(?:,\s*(?:but|and)\s+|,|;|\s+but\s+)\s*", re.I)
+
+# sentences that only say the order is free (no task, no constraint): a free-order clause ("the order is up
+# to you"; content_words.free_order_phrase) in a sentence that opens with no verb ("Any order." alone does
+# not say what it frees, and is left to the rules)
+NO_ORDER_SENTENCE = re.compile(rf"\b{free_order_phrase('clause')}\b", re.I)
+# "Do the fork first.", "The mug last.", "Start with the fork.": the task of one named object before (after)
+# every other task; "the" may be left out before tasks named so ("Counter ones first"), "go" said (h190)
+FIRST_LAST_SENTENCE = re.compile(
+    r"^(?:(?:please\s+)?(?:do|handle|deal\s+with)\s+)?"
+    r"(?P<a>(?:the|that|this)\s+[a-z][a-z\s]*?|[a-z]+(?:\s+[a-z]+)?\s+(?:ones?|jobs?|tasks?))\s+"
+    r"(?:(?:go|goes|come|comes|should\s+(?:go|come)|get\s+done|gets\s+done)\s+)?"
+    r"(?P<rel>first|last)(?:\s*,?\s*(?:please|though))?$"
+    r"|^(?:please\s+)?(?:start|begin)\s+with\s+(?P<start>(?:the|that|this)\s+[a-z][a-z\s]*?)(?:\s*,?\s*please)?$",
+    re.I,
+)
+# "A should be placed before B" with bare noun phrases: a relation between tasks named by their objects
+REL_SENTENCE = re.compile(
+    r"^(?P<a>.+?)\s+(?:should|must|has\s+to|needs?\s+to|is\s+to)\s+(?:be\s+)?(?:placed|put|moved|done|handled|"
+    r"transferred|delivered|completed|finished)\s+(?P<rel>before|after)\s+(?P<b>.+)$",
+    re.I,
+)
 
 Relation = tuple[str, str, str]  # (kind, a, b); "free": a is "first" / "last", b the count
 

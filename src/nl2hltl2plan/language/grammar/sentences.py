@@ -26,7 +26,12 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     subordinate_first,
     the_moment,
 )
-from nl2hltl2plan.language.grammar.order_remarks import order_remark
+from nl2hltl2plan.language.grammar.order_remarks import (
+    FIRST_LAST_SENTENCE,
+    NO_ORDER_SENTENCE,
+    REL_SENTENCE,
+    order_remark,
+)
 from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 from nl2hltl2plan.language.grammar.sentence_joins import (
     both_of_two_sentences,
@@ -108,7 +113,7 @@ def read_sentences(text: str) -> Sentences:
         if rel is not None:
             out.relations.append(rel)
             continue
-        if G.NO_ORDER_SENTENCE.search(body) and not any(w in G.VERBS for w, _, _ in tokens(body)[:1]):
+        if NO_ORDER_SENTENCE.search(body) and not any(w in G.VERBS for w, _, _ in tokens(body)[:1]):
             continue
         out.sentences.append(Sentence(index, sentence, start, body, markers, trailing))
     return out
@@ -197,7 +202,7 @@ def relation_sentence(body: str) -> RelationSentence | None:
     candle before the soap"."""
     if one := _DO_BEFORE.match(body):
         return RelationSentence(one["rel"].lower(), one["a"] or one["a2"], one["b"])
-    rel = G.REL_SENTENCE.match(body)
+    rel = REL_SENTENCE.match(body)
     if rel and not any(w in G.VERBS for w, _, _ in tokens(rel.group("a"))[:1]):
         return RelationSentence(rel.group("rel").lower(), rel.group("a"), rel.group("b"))
     return None
@@ -206,7 +211,7 @@ def relation_sentence(body: str) -> RelationSentence | None:
 def first_last_sentence(sentence: str) -> RelationSentence | None:
     """ "Do the fork first." / "Start with the fork." / "The mug last.": the task of one object named by
     another sentence comes before (after) every other task."""
-    if one := G.FIRST_LAST_SENTENCE.match(sentence.strip(" .!")):
+    if one := FIRST_LAST_SENTENCE.match(sentence.strip(" .!")):
         return RelationSentence((one["rel"] or "first").lower(), one["a"] or one["start"], "")
     return None
 

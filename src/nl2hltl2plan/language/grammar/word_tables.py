@@ -8,7 +8,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language import grounding
-from nl2hltl2plan.language.content_words import free_order_phrase, phrase_list_pattern
+from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.courtesy import courtesy_pattern
 
 # ----- verbs ---------------------------------------------------------------------------------------
@@ -534,7 +534,9 @@ TRAILING: list[tuple[re.Pattern[str], str]] = [
             r"(?:done|completed|performed|finished|placed|put|moved|carried\s+out)\s+)?(?:but\s+)?"
             r"(?:(?:only|right|just|immediately)\s+)?"
             r"(?P<rel>after|before|(?:ahead\s+of|prior\s+to)(?=\s+(?!turning|switching)\w+ing\b)|once|"
-            r"when(?=\s+(?:\w+ing|the|both\s+(?:of\s+th[a-z]+\s+)?(?:are|have))\b))\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|both\s+"
+            # "when both are finished" closing the sentence (h234), never before a clause of its own ("and
+            # then, only when both are there, put the carrot ...": the carrot is no reference)
+            r"when(?=\s+(?:\w+ing|the)\b|\s+both\s+(?:of\s+th[a-z]+\s+)?(?:are|have)\b[^,;]*$))\s+(?P<ref>(?:\w+ing\b|the\s|you\s|having\s|all\s|every|each|both\s+"
             r"(?=(?:[a-z]+\s+){1,2}(?:jobs?|ones|tasks?|chores)\b|(?:of\s+th[a-z]+\s+)?(?:are|have)\s)|finishing|completing).+)$",
             _F,
         ),
@@ -577,24 +579,3 @@ GENERIC_REF = re.compile(
     _F,
 )
 ORDINALS = {"first": 0, "second": 1, "third": 2, "fourth": 3}
-
-# sentences that only say the order is free (no task, no constraint): a free-order clause ("the order is up
-# to you"; content_words.free_order_phrase) in a sentence that opens with no verb ("Any order." alone does
-# not say what it frees, and is left to the rules)
-NO_ORDER_SENTENCE = re.compile(rf"\b{free_order_phrase('clause')}\b", _F)
-# "Do the fork first.", "The mug last.", "Start with the fork.": the task of one named object before (after)
-# every other task; "the" may be left out before tasks named so ("Counter ones first"), "go" said (h190)
-FIRST_LAST_SENTENCE = re.compile(
-    r"^(?:(?:please\s+)?(?:do|handle|deal\s+with)\s+)?"
-    r"(?P<a>(?:the|that|this)\s+[a-z][a-z\s]*?|[a-z]+(?:\s+[a-z]+)?\s+(?:ones?|jobs?|tasks?))\s+"
-    r"(?:(?:go|goes|come|comes|should\s+(?:go|come)|get\s+done|gets\s+done)\s+)?"
-    r"(?P<rel>first|last)(?:\s*,?\s*(?:please|though))?$"
-    r"|^(?:please\s+)?(?:start|begin)\s+with\s+(?P<start>(?:the|that|this)\s+[a-z][a-z\s]*?)(?:\s*,?\s*please)?$",
-    _F,
-)
-# "A should be placed before B" with bare noun phrases: a relation between tasks named by their objects
-REL_SENTENCE = re.compile(
-    r"^(?P<a>.+?)\s+(?:should|must|has\s+to|needs?\s+to|is\s+to)\s+(?:be\s+)?(?:placed|put|moved|done|handled|"
-    r"transferred|delivered|completed|finished)\s+(?P<rel>before|after)\s+(?P<b>.+)$",
-    _F,
-)
