@@ -2620,3 +2620,48 @@ HELD_H233: dict[str, dict[int, list[str]]] = {
             "sequencing is flexible."],
     },
 }
+
+
+# h241's held-out batch (session 31, issues 28 and 24): task 4 said in stages, in voices no batch above uses
+# (a play's acts, a game's levels, a relay's legs, a lettered list, batches, a warm-up and a main event,
+# "before touching the others" / "only then", bare ordinals, waves). Written with DEV_H241 and committed
+# before any rule changed, put aside and scored once at the end.
+HELD_H241: dict[str, dict[int, list[str]]] = {
+    "theatre": {
+        4: ["Act one: the green apple and the orange go into the yellow plate, in whichever order. Act two, "
+            "after act one: the carrot and the red apple go into the blue plate."],
+    },
+    "video_game": {
+        4: ["Level 1 - get the orange and the green apple into the yellow plate. Level 2 - once level 1 is "
+            "cleared, get the red apple and the carrot into the blue plate. Either order inside a level."],
+    },
+    "relay": {
+        4: ["First leg: green apple and orange into the yellow plate, any order. Second leg: carrot and red "
+            "apple into the blue plate, any order."],
+    },
+    "lettered": {
+        4: ["A) the green apple and the orange into the yellow plate (either order)\nB) then the carrot and "
+            "the red apple into the blue plate (either order)"],
+    },
+    "batches": {
+        4: ["Do it in two batches. The first batch is the orange and the green apple, into the yellow plate. "
+            "The second batch, the carrot and the red apple, goes into the blue plate once the first batch "
+            "is in."],
+    },
+    "warm_up": {
+        4: ["Warm-up: pop the green apple and the orange in the yellow plate, whichever first. Main event, "
+            "only after the warm-up: the red apple and the carrot in the blue plate."],
+    },
+    "before_touching": {
+        4: ["Get the green apple and the orange into the yellow plate before touching the others. Only then "
+            "put the carrot and the red apple into the blue plate, in any order."],
+    },
+    "ordinals_alone": {
+        4: ["Firstly: the green apple and the orange in the yellow plate. Secondly: the carrot and the red "
+            "apple in the blue plate. Inside each, any order."],
+    },
+    "waves": {
+        4: ["Wave one, the orange and the green apple into the yellow plate. Wave two, once all of those are "
+            "down, the carrot and the red apple into the blue plate."],
+    },
+}
