@@ -2706,8 +2706,8 @@ DEV_H241: dict[str, dict[int, list[str]]] = {
             "red apple go in the blue plate."],
     },
     "lists": {
-        4: ["1. Green apple and orange into the yellow plate, either order.\n2. Carrot and red apple into the "
-            "blue plate, either order.",
+        4: ["1. Green apple and orange into the yellow plate, either order.\n2. Carrot and red apple into "
+            "the blue plate, either order.",
             "a) the orange and the green apple in the yellow plate\nb) the carrot and the red apple in the "
             "blue plate"],
     },
