@@ -20,6 +20,9 @@ STAGED = (sorted(FIRST + SECOND), sorted((a, b) for a in FIRST for b in SECOND))
         # a stage noun with a number word and a comma ("Wave one, ...")
         "Wave one, the green apple and the orange into the yellow plate. Wave two, the carrot and the red "
         "apple into the blue plate.",
+        # a later stage's reference to the one just before it says the order the labels say already
+        "Batch one: the green apple and the orange into the yellow plate. Batch two, once batch one is in: "
+        "the carrot and the red apple into the blue plate.",
         # a stage named by its ordinal opening a sentence, with its reference back to the stage before
         "The first batch is the green apple and the orange, into the yellow plate. The second batch is the "
         "carrot and the red apple, into the blue plate, after the first batch.",

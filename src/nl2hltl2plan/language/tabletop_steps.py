@@ -54,7 +54,7 @@ _NOT_STEPS = _ALTERNATIVE_NOUNS | frozenset("goal requirement constraint".split(
 # (`identifiers_chained_read`)
 _REFERENCE = (
     r"(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|following)\s+(?P<noun2>[a-z]+)\s+(?P<b>\w+)"
-    r"(?:\s+is\s+(?:done|finished|complete))?\s*\)?"
+    r"(?:\s+is\s+(?:done|finished|complete|completed|over|in))?\s*\)?"
 )
 # "Round B, only after round A:", "Batch two (after batch one):", "Chapter two, only after chapter one:": a
 # label that names the label before it (the same noun, one back in turn) says the order the labels say already
