@@ -51,6 +51,13 @@ def test_a_lettered_list_freed_as_a_whole_only_lists():
     assert pairs_read(text) == (sorted([("Orange", "YellowPlate"), ("Carrot", "BluePlate")]), [])
 
 
+def test_letters_inside_a_sentence_are_no_lettered_list():
+    # a method's steps named by letter after a colon and a semicolon, freed by letter, as before (h106)
+    text = "Method: a) green apple onto blue plate; b) orange onto yellow plate. Steps a and b may be done in " \
+        "either order."
+    assert pairs_read(text) == (sorted([("GreenApple", "BluePlate"), ("Orange", "YellowPlate")]), [])
+
+
 def test_letters_out_of_turn_are_refused_by_name():
     res = translate("b) the orange in the yellow plate\na) the carrot in the blue plate", WORLD, build=False)
     assert res.partial and any("'b), a)' (order): steps numbered out of turn" in u for u in res.unparsed)

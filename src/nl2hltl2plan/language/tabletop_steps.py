@@ -33,10 +33,11 @@ _NOUN_LABEL = re.compile(
     r"\s*[:)])(?P<n2>)\s*",
     re.IGNORECASE,
 )
-# "1) ...", "2. ...", "a) ... b) ..." (a letter with a bracket, so that no article is one), or a number
-# word with a comma opening a sentence ("One, ...; two, ...")
+# "1) ...", "2. ...", "a) ... b) ..." one a line (a letter with a bracket opening a sentence, so that no
+# article is one; "Method: a) ...; b) ... Steps a and b ..." is another reader's), or a number word with a
+# comma opening a sentence ("One, ...; two, ...")
 _LIST_NUMBER = re.compile(
-    r"(?:^|(?<=[\s.;!?]))\(?(?:(?P<n>\d)[.)]|(?P<l>[a-dA-D])\))\s+"
+    r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+|(?:^|(?<=[.!?])|(?<=[.!?]\s))(?P<l>[a-dA-D])\)\s+"
     r"|(?:^|(?<=[.;!?])|(?<=[.;!?]\s))(?i:(?P<w>one|two|three|four)),\s+"
 )
 # "Plan A: ... Plan B: ...", "Option 1: ...": alternatives, no steps (`tabletop_pairs` refuses them)
