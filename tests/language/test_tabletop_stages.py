@@ -53,8 +53,10 @@ def test_a_lettered_list_freed_as_a_whole_only_lists():
 
 def test_letters_inside_a_sentence_are_no_lettered_list():
     # a method's steps named by letter after a colon and a semicolon, freed by letter, as before (h106)
-    text = "Method: a) green apple onto blue plate; b) orange onto yellow plate. Steps a and b may be done in " \
+    text = (
+        "Method: a) green apple onto blue plate; b) orange onto yellow plate. Steps a and b may be done in "
         "either order."
+    )
     assert pairs_read(text) == (sorted([("GreenApple", "BluePlate"), ("Orange", "YellowPlate")]), [])
 
 
