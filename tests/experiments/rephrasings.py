@@ -2704,3 +2704,115 @@ DEV_H235: dict[str, dict[int, list[str]]] = {
             "business: then put the carrot and the red apple in the blue plate, in either order."],
     },
 }
+
+
+# h241's held-out batch (session 31, issues 28 and 24): task 4 said in stages, in voices no batch above uses
+# (a play's acts, a game's levels, a relay's legs, a lettered list, batches, a warm-up and a main event,
+# "before touching the others" / "only then", bare ordinals, waves). Written with DEV_H241 and committed
+# before any rule changed, put aside and scored once at the end.
+HELD_H241: dict[str, dict[int, list[str]]] = {
+    "theatre": {
+        4: ["Act one: the green apple and the orange go into the yellow plate, in whichever order. Act two, "
+            "after act one: the carrot and the red apple go into the blue plate."],
+    },
+    "video_game": {
+        4: ["Level 1 - get the orange and the green apple into the yellow plate. Level 2 - once level 1 is "
+            "cleared, get the red apple and the carrot into the blue plate. Either order inside a level."],
+    },
+    "relay": {
+        4: ["First leg: green apple and orange into the yellow plate, any order. Second leg: carrot and red "
+            "apple into the blue plate, any order."],
+    },
+    "lettered": {
+        4: ["A) the green apple and the orange into the yellow plate (either order)\nB) then the carrot and "
+            "the red apple into the blue plate (either order)"],
+    },
+    "batches": {
+        4: ["Do it in two batches. The first batch is the orange and the green apple, into the yellow plate. "
+            "The second batch, the carrot and the red apple, goes into the blue plate once the first batch "
+            "is in."],
+    },
+    "warm_up": {
+        4: ["Warm-up: pop the green apple and the orange in the yellow plate, whichever first. Main event, "
+            "only after the warm-up: the red apple and the carrot in the blue plate."],
+    },
+    "before_touching": {
+        4: ["Get the green apple and the orange into the yellow plate before touching the others. Only then "
+            "put the carrot and the red apple into the blue plate, in any order."],
+    },
+    "ordinals_alone": {
+        4: ["Firstly: the green apple and the orange in the yellow plate. Secondly: the carrot and the red "
+            "apple in the blue plate. Inside each, any order."],
+    },
+    "waves": {
+        4: ["Wave one, the orange and the green apple into the yellow plate. Wave two, once all of those are "
+            "down, the carrot and the red apple into the blue plate."],
+    },
+}
+
+
+# h241's development batch (session 31, issues 28 and 24), written with HELD_H241: task 4 said in stages
+# ("Phase one ... Phase two, once phase one is done", "Round 1 ... Round 2", "To begin, ... When that's all
+# set, ...", "Part A ... then Part B", "the first batch ... the second batch", "warm-up ... main event",
+# numbered and lettered lists, "get these done before touching the others", "only then", "once all of those
+# are down"); measured on first contact before the reader was changed for it.
+DEV_H241: dict[str, dict[int, list[str]]] = {
+    "phases": {
+        4: ["Phase one: put the green apple and the orange in the yellow plate. Phase two, once phase one is "
+            "done: put the carrot and the red apple in the blue plate.",
+            "Phase I) green apple and orange into the yellow plate. Phase II) carrot and red apple into the "
+            "blue plate."],
+    },
+    "rounds": {
+        4: ["Round 1: green apple and orange into the yellow plate. Round 2: carrot and red apple into the "
+            "blue plate. Any order within a round.",
+            "Round one, either order: the orange and the green apple into the yellow plate. Round two, "
+            "either order: the carrot and the red apple into the blue plate.",
+            "In the opening round, put the green apple and the orange in the yellow plate. In the second "
+            "round, put the carrot and the red apple in the blue plate."],
+    },
+    "to_begin": {
+        4: ["To begin, the green apple and the orange into the yellow plate, whichever order. When that's "
+            "all set, the carrot and the red apple into the blue plate."],
+    },
+    "parts": {
+        4: ["Part A: place the orange and the green apple on the yellow plate. Then Part B: place the red "
+            "apple and the carrot on the blue plate.",
+            "Stage A: the green apple and the orange to the yellow plate. Stage B: the carrot and the red "
+            "apple to the blue plate."],
+    },
+    "batches": {
+        4: ["The first batch is the green apple and the orange, into the yellow plate. The second batch is "
+            "the carrot and the red apple, into the blue plate, after the first batch."],
+    },
+    "warm_up": {
+        4: ["Warm-up: the green apple and the orange go in the yellow plate. Main event: the carrot and the "
+            "red apple go in the blue plate."],
+    },
+    "lists": {
+        4: ["1. Green apple and orange into the yellow plate, either order.\n2. Carrot and red apple into "
+            "the blue plate, either order.",
+            "a) the orange and the green apple in the yellow plate\nb) the carrot and the red apple in the "
+            "blue plate"],
+    },
+    "conditions": {
+        4: ["Get the green apple and the orange into the yellow plate; get these done before touching the "
+            "others. Then the carrot and the red apple go into the blue plate.",
+            "Put the green apple and the orange in the yellow plate, any order. Only then put the carrot and "
+            "the red apple in the blue plate.",
+            "Put the green apple and the orange in the yellow plate. Once all of those are down, put the "
+            "carrot and the red apple in the blue plate, either order."],
+    },
+    "labels": {
+        4: ["Step one - orange and green apple into the yellow plate. Step two - red apple and carrot into "
+            "the blue plate. Within a step, any order.",
+            "First: the green apple and the orange into the yellow plate. Second: the carrot and the red "
+            "apple into the blue plate.",
+            "Wave 1: green apple and orange into the yellow plate. Wave 2: carrot and red apple into the "
+            "blue plate.",
+            "Level one: the green apple and the orange onto the yellow plate. Level two, only after level "
+            "one: the carrot and the red apple onto the blue plate.",
+            "Act 1: the green apple and the orange go in the yellow plate. Act 2: the carrot and the red "
+            "apple go in the blue plate."],
+    },
+}

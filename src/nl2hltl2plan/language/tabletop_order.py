@@ -293,6 +293,17 @@ _BEGIN_WITH = re.compile(r"\b(?:begin|start)(?:\s+off)?\s+with\b", re.IGNORECASE
 _END_WITH = re.compile(r"\b(?:and\s+)?(?:end|finish)(?:\s+off)?\s+with\b", re.IGNORECASE)
 
 
+# "A and B on P before touching the others. C and D on Q." (or "...; get these done before moving on to the
+# rest."): what was just said comes first, and what is said after it, the others, then; read as "first"
+# only where words follow that name the others (else the clause is left, to be refused)
+_BEFORE_THE_REST = re.compile(
+    r"\s*(?:[;,]\s*(?:and\s+)?(?:get|have)\s+(?:these|those|them|this|that|both)(?:\s+(?:both|all))?\s+"
+    r"(?:done|sorted|finished|in)\s+)?\s*\bbefore\s+(?:touching|starting\s+on|moving\s+on\s+to|getting\s+to|"
+    r"doing|handling)\s+(?:the\s+others|the\s+rest|anything\s+else)(?=\s*[.;!?]\s*\w)",
+    re.IGNORECASE,
+)
+
+
 # an end-state opener with no comma before the wish it opens ("By the end I want X on Y", "In the end we'd
 # like ..."): the comma the reader takes it with ("by the end, I want ..."), so the wish reads as the goal
 _END_OPENER = re.compile(
@@ -311,13 +322,14 @@ def end_opener_read(text: str) -> str:
 
 
 def turn_phrases_read(text: str) -> str:
-    """`text` with each clause that looks back on the step before as "then", and an "end / finish with"
-    after a "begin / start with" as "then".
+    """`text` with each clause that looks back on the step before as "then", one that puts what was said
+    before the rest (`_BEFORE_THE_REST`) as "first", and an "end / finish with" after a "begin / start
+    with" as "then".
 
     >>> turn_phrases_read("Begin with A and end with B. Having done that, C.")
     'Begin with A then B. then, C.'
     """
-    text = _LOOKS_BACK.sub("then", text)
+    text = _LOOKS_BACK.sub("then", _BEFORE_THE_REST.sub(" first", text))
     first = _BEGIN_WITH.search(text)
     if first is not None:
         text = text[: first.end()] + _END_WITH.sub(" then", text[first.end() :])

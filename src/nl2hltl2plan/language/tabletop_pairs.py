@@ -61,12 +61,11 @@ from nl2hltl2plan.language.tabletop_order import (
 )
 from nl2hltl2plan.language.tabletop_remarks import role_dropped
 from nl2hltl2plan.language.tabletop_spelling import misspelt_order_words, names_respelt, order_words_spelt
-from nl2hltl2plan.language.tabletop_steps import labels_out_of_turn, numbered_steps, steps_read
+from nl2hltl2plan.language.tabletop_steps import labels_out_of_turn, list_freed, numbered_steps, steps_read
 from nl2hltl2plan.language.tabletop_waits import plate_waits_read
 from nl2hltl2plan.language.tabletop_wording import (
     corrected,
     free_order,
-    frees_every_step,
     last_group_free,
     last_item_unmarked,
     mention_pattern,
@@ -398,7 +397,7 @@ def read_pairs(text: str, types: set[str]) -> Reading | None:
         return None
     plain, last_free = last_group_free(plain)
     unordered, remarks = free_order(plain)
-    free, listed = bool(remarks), frees_every_step(remarks)
+    free, listed = bool(remarks), list_freed(plain, remarks)
     stepped = steps_read(last_item_unmarked(unordered) if listed else unordered, listed)
     if stepped is not None:  # a clause waiting for placements, and a "then" closing its clause, put first
         stepped = heading_colon_put_back(reference_fronted(stepped, pattern), pattern)

@@ -9,8 +9,9 @@ one placement ("Method: Step 1 - A on P. Step 2 - B on Q. Either step may come f
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
-from nl2hltl2plan.language.content_words import free_order_remarks
+from nl2hltl2plan.language.content_words import free_order_remarks, phrase_list_pattern
 from nl2hltl2plan.language.tabletop_freed_steps import runs_freed
 from nl2hltl2plan.language.tabletop_wording import NUMBER_WORDS, free_order, frees_every_step
 
@@ -18,7 +19,7 @@ from nl2hltl2plan.language.tabletop_wording import NUMBER_WORDS, free_order, fre
 # "step one, ...; step two, ..."), or (with a colon or bracket after it, so
 # that an article or "I" is not one) a letter or a roman numeral ("Part A:", "Phase II)")
 _LETTERS = {"a": 1, "b": 2, "c": 3, "d": 4, "i": 1, "ii": 2, "iii": 3, "iv": 4}
-_STEP_NOUN = r"(?:step|phase|stage|part|round|course|batch)"
+_STEP_NOUN = r"(?:step|phase|stage|part|round|course|batch|level|act|wave)"
 _TURN = (
     r"(?:(?P<n1>\d|one|two|three|four|first|second|third|fourth)\s*[:.)\-,]|(?P<l1>[a-d]|i{1,3}|iv)\s*[:)])"
 )
@@ -32,9 +33,12 @@ _NOUN_LABEL = re.compile(
     r"\s*[:)])(?P<n2>)\s*",
     re.IGNORECASE,
 )
-# "1) ...", "2. ...", or a number word with a comma opening a sentence ("One, ...; two, ...")
+# "1) ...", "2. ...", "a) ... b) ..." one a line (a letter with a bracket opening a sentence, so that no
+# article is one; "Method: a) ...; b) ... Steps a and b ..." is another reader's), or a number word with a
+# comma opening a sentence ("One, ...; two, ...")
 _LIST_NUMBER = re.compile(
-    r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+|(?:^|(?<=[.;!?])|(?<=[.;!?]\s))(?i:(?P<w>one|two|three|four)),\s+"
+    r"(?:^|(?<=[\s.;!?]))\(?(?P<n>\d)[.)]\s+|(?:^|(?<=[.!?])|(?<=[.!?]\s))(?P<l>[a-dA-D])\)\s+"
+    r"|(?:^|(?<=[.;!?])|(?<=[.;!?]\s))(?i:(?P<w>one|two|three|four)),\s+"
 )
 # "Plan A: ... Plan B: ...", "Option 1: ...": alternatives, no steps (`tabletop_pairs` refuses them)
 _ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
@@ -51,7 +55,7 @@ _NOT_STEPS = _ALTERNATIVE_NOUNS | frozenset("goal requirement constraint".split(
 # (`identifiers_chained_read`)
 _REFERENCE = (
     r"(?:,|\()\s*(?:but\s+)?(?:only\s+)?(?:after|once|following)\s+(?P<noun2>[a-z]+)\s+(?P<b>\w+)"
-    r"(?:\s+is\s+(?:done|finished|complete))?\s*\)?"
+    r"(?:\s+is\s+(?:done|finished|complete|completed|over|in))?\s*\)?"
 )
 # "Round B, only after round A:", "Batch two (after batch one):", "Chapter two, only after chapter one:": a
 # label that names the label before it (the same noun, one back in turn) says the order the labels say already
@@ -68,6 +72,73 @@ _GROUP_DONE = re.compile(
     r"(?:both\s+|all\s+)?(?:in|there|done|placed|in\s+place)\s*(?=[:.)\-])",
     re.IGNORECASE,
 )
+
+
+# "The first batch is A and B, into P. The second batch is C and D, into Q, after the first batch.": a stage
+# named by its ordinal opening a sentence is a label ("First batch: ...") where two or more of one noun are in
+# turn; in a later stage, a reference to the one just before it ("after the first batch", "once the first
+# batch is in") says the order the labels say already, and is dropped (any other stays, to be refused)
+_ORDINAL_STAGE = re.compile(
+    rf"(?:^|(?<=[.;!?]))(?P<lead>\s*)the\s+(?P<n>first|second|third|fourth)\s+(?P<noun>{_STEP_NOUN})"
+    r"(?:\s+(?:is|are)\s+|\s*[,:]\s*|\s+[-–—]\s+)",
+    re.IGNORECASE,
+)
+_ORDINAL_BACK = re.compile(
+    rf"\s*,?\s*(?:but\s+)?(?:only\s+)?(?:after|once|following)\s+the\s+(?P<b>first|second|third)\s+"
+    rf"(?P<noun2>{_STEP_NOUN})(?:\s+(?:is|are|has\s+been)\s+(?:done|in|finished|complete|completed|over))?"
+    r"(?=\s*[,.;!?]|\s*$)",
+    re.IGNORECASE,
+)
+
+
+# "Warm-up: A and B on P. Main event: C and D on Q.": an opening stage and one that follows it, named by
+# their place (`tabletop_stages.txt`), as labels in turn; the later one's reference back to the opening one
+# ("Main event, only after the warm-up:") says the order they say already
+_OPENING = phrase_list_pattern("tabletop_stages.txt", "opening")
+_FOLLOWING = phrase_list_pattern("tabletop_stages.txt", "following")
+_NAMED_STAGE = re.compile(
+    rf"(?:^|(?<=[.;!?]))\s*(?:the\s+)?(?:(?P<open>{_OPENING})|{_FOLLOWING})"
+    rf"(?P<back>\s*,\s*(?:but\s+)?(?:only\s+)?(?:after|once|following)\s+the\s+{_OPENING}"
+    r"(?:\s+is\s+(?:done|over|finished))?)?\s*(?::|\s[-–—]\s)\s*",
+    re.IGNORECASE,
+)
+
+
+def named_stages_read(text: str) -> str:
+    """ "Warm-up: A. Main event: B." -> "Stage 1: A. Stage 2: B." where one opening stage and one that
+    follows it are named, in that order, and only the later one looks back; the text as it is otherwise."""
+    marks = list(_NAMED_STAGE.finditer(text))
+    if [bool(m["open"]) for m in marks] != [True, False] or marks[0]["back"]:
+        return text
+    for turn, m in reversed(list(enumerate(marks, 1))):
+        text = text[: m.start()] + f" Stage {turn}: " + text[m.end() :]
+    return text.strip()
+
+
+def ordinal_stages_read(text: str) -> str:
+    """ "The first batch is A. The second batch is B, after the first batch." -> "First batch: A. Second
+    batch: B." (see `_ORDINAL_STAGE`); the text as it is unless two or more such stages of one noun are in
+    turn."""
+    marks = list(_ORDINAL_STAGE.finditer(text))
+    turns = [NUMBER_WORDS[m["n"].lower()] for m in marks]
+    nouns = {m["noun"].lower() for m in marks}
+    if len(marks) < 2 or turns != list(range(1, len(marks) + 1)) or len(nouns) > 1:
+        return text
+
+    def back(turn: int) -> Callable[[re.Match[str]], str]:
+        def dropped(r: re.Match[str]) -> str:
+            return "" if NUMBER_WORDS[r["b"].lower()] == turn - 1 and r["noun2"].lower() == noun else r[0]
+
+        return dropped
+
+    noun = marks[0]["noun"].lower()
+    ends = [m.start() for m in marks[1:]] + [len(text)]
+    out = text[: marks[0].start()]
+    for turn, (m, end) in enumerate(zip(marks, ends, strict=True), 1):
+        body = text[m.end() : end]
+        body = _ORDINAL_BACK.sub(back(turn), body) if turn > 1 else body
+        out += f"{m['lead']}{m['n']} {m['noun']}: {body}"
+    return out
 
 
 # "Step 1 (any order):", "Stage one, in either order:", "Step 2, after step 1 (any order):": a label that
@@ -181,7 +252,7 @@ def label_references_dropped(text: str) -> str:
     """ "Round B, only after round A:" -> "Round B:" where the label it names is the one just before it in
     turn; any other such reference is left (and refused where it is read); a spec sheet's identifiers each
     naming the one before as steps (`identifiers_chained_read`)."""
-    text = identifiers_chained_read(text)
+    text = identifiers_chained_read(ordinal_stages_read(named_stages_read(text)))
 
     def dropped(m: re.Match[str]) -> str:
         return m["label"] if _names_the_one_before(m["noun"], _place_in_turn(m["t"]), m) else m[0]
@@ -299,6 +370,8 @@ def list_numbers_read(text: str, listed: bool) -> str | None:
 
 
 def _list_number(m: re.Match[str]) -> int:
+    if m["l"]:
+        return _LETTERS[m["l"].lower()]
     return int(m["n"]) if m["n"] else NUMBER_WORDS[m["w"].lower()]
 
 
@@ -313,9 +386,15 @@ def numbered_steps(text: str) -> str:
         text = " ".join(_as_steps(text, labels).split())
     if len(_LIST_NUMBER.findall(text)) < 2:
         return text
-    listed = frees_every_step(free_order(text.lower())[1]) and not _inside_an_item(text)
+    listed = list_freed(text, free_order(text.lower())[1])
     read = list_numbers_read(text, listed)
     return " ".join(read.split()) if read is not None else text
+
+
+def list_freed(text: str, remarks: list[str]) -> bool:
+    """Does one of the free-order `remarks` of `text` free the whole list, not only the order inside each
+    step, nor only an item of a numbered list ("1. A and B, either order. 2. ...": that item alone)?"""
+    return frees_every_step(remarks) and not _inside_an_item(text)
 
 
 def _inside_an_item(text: str) -> bool:

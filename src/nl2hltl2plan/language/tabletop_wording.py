@@ -225,10 +225,12 @@ _BY_THE_END = re.compile(
     r",?\s*\b(?:when|once|by\s+the\s+time)\s+you(?:'re|\s+are|'ve|\s+have)\s+(?:all\s+)?(?:done|finished|through)"
     r"(?=\s*(?:[.;!?]|$))"
 )
-# "once that's sorted / taken care of / out of the way": a step done (said as "done", which check 1 knows)
+# "once that's sorted / taken care of / out of the way": a step done (said as "done", which check 1 knows);
+# "(all) set" and "down" only where they end the clause ("when that's all set, ..."; not "set on the plate")
 _DONE_WORDS = re.compile(
     r"\b(?P<that>that|this|those|these|it|they)(?:'s|s|\s+is|\s+are|'re)\s+(?:sorted|handled|through|over|"
-    r"taken\s+care\s+of|out\s+of\s+the\s+way|loaded|filled|full|ready)\b"
+    r"taken\s+care\s+of|out\s+of\s+the\s+way|loaded|filled|full|ready|"
+    r"(?:all\s+)?(?:set|down)(?=\s*(?:[,.;:!?]|$)))\b"
 )
 # a non-native speaker's end of a step, with no subject or a bare verb: "when is finish(ed)", "after finish
 # this", "once finishing all" (that is done); only where it ends its clause ("after finishing the orange, ..."
