@@ -27,6 +27,8 @@ from nl2hltl2plan.language.translate import translate
          "Chill a plate and put it on the shelf, heat a mug and put it on the coffee maker."),
         ("After that, heat a tomato slice and an apple - the slice goes in the sink and the apple in the fridge.",
          "After that, heat a tomato slice and put it in the sink, heat an apple and put it in the fridge."),
+        ("Chill a plate and a potato, then put the former in the cabinet and the latter on the white table.",
+         "Chill a plate and put it in the cabinet, chill a potato and put it on the white table."),
         ("Heat two mugs: one goes on the coffee maker, the other in a cabinet.",
          "Heat a mug and put it on the coffee maker, heat another mug and put it in a cabinet."),
     ],
@@ -43,6 +45,7 @@ def test_places_said_after_the_things_are_given_to_each(text, rewritten):
         "Chill a mug and wash a plate, and put it on the counter.",  # "it" is one of them
         "Put a mug in the sink and wash a plate, and put both on the counter.",  # "put" is no treatment
         "Heat two slices of bread - one on the plate and the other in the bin.",  # "slices" names no kind
+        "Wash a mug, a plate and a cup, then put the former in the sink and the latter on the table.",  # 3
     ],
 )
 def test_words_that_give_no_thing_one_place_are_left(text):

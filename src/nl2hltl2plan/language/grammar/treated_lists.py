@@ -263,6 +263,8 @@ _ALL_THERE = re.compile(
 _LANDMARK = re.compile(r"\b(?:by|near|beside|next\s+to|left\s+of|right\s+of|under|above)\s+(?:the|a)\b", re.I)
 _PLACE_GAP = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+(?=(?:the|a|an)\s)", re.I)
 _NOT_NAMING = frozenset({"the", "a", "an", "of", "piece", "slice"})
+# "Chill a plate and a potato, then put the former in the cabinet and the latter on the table"
+_FORMER_LATTER = {"the former": 0, "the latter": 1}
 
 
 def _a_place(place: str) -> bool:
@@ -319,6 +321,8 @@ def _places_of(places: str, items: list[str]) -> dict[int, str] | None:
             return None
         for np in [*waiting, said["np"]]:
             hit = [k for k, i in enumerate(items) if _same_thing(np, i)]
+            if np.lower() in _FORMER_LATTER and len(items) == 2:
+                hit = [_FORMER_LATTER[np.lower()]]
             if len(hit) != 1 or hit[0] in where:
                 return None
             where[hit[0]] = f"{said['prep'].lower()} {said['place']}"
