@@ -25,7 +25,8 @@ from nl2hltl2plan.language.translate import translate
          "Wash a slice of lettuce and put it on the side table, heat a tomato and put it on the side table."),
         ("Chill a plate and heat a mug: plate on the shelf, mug on the coffee maker.",
          "Chill a plate and put it on the shelf, heat a mug and put it on the coffee maker."),
-        ("After that, heat a tomato slice and an apple - the slice goes in the sink and the apple in the fridge.",
+        ("After that, heat a tomato slice and an apple - the slice goes in the sink and the apple in the "
+         "fridge.",
          "After that, heat a tomato slice and put it in the sink, heat an apple and put it in the fridge."),
         ("Chill a plate and a potato, then put the former in the cabinet and the latter on the white table.",
          "Chill a plate and put it in the cabinet, chill a potato and put it on the white table."),

@@ -23,7 +23,12 @@ is one of the grammar's treatments (`word_tables`: clean, heat, cool), so anythi
   put it on the counter" (no order: a list says none); every thing of the list takes one place, and each
   place names one thing of it by its words ("the slice" of "a potato slice"), else the text stays; "one at
   a time" after such a list ("..., one at a time, and put each of them on the counter") says nothing more;
-  "microwave a slice, then drop the slice in the sink" drops that slice ("then drop it").
+  "microwave a slice, then drop the slice in the sink" drops that slice ("then drop it");
+- the same where each thing has a treatment of its own (h247): "Chill a mug and wash a plate - the mug goes
+  on the coffee maker, the plate in the microwave" (after a stop, colon, semicolon, question mark, dash or
+  "then"; "the former" / "the latter" of two things; "plate on the shelf" without its article), or one place
+  for all ("..., and put both on the counter"); "Heat two mugs: one goes on A, the other in B" is "heat a mug
+  and put it on A, heat another mug and put it in B".
 """
 
 from __future__ import annotations
@@ -115,16 +120,8 @@ def _patterns() -> tuple[re.Pattern[str], ...]:
         re.I,
     )
     placed_after = re.compile(
-        rf"{_AFTER_LEAD}(?P<verb>{verbs}|put|move){_PARTICLE}(?:\s+away)?\s+(?P<items>{_ITEM_NP}(?:\s*,\s*{_ITEM_NP})*"
-        rf"\s*,?\s+and\s+{_ITEM_NP})(?:\s+away)?{_APPLIANCE}(?:\s*,?\s*one\s+at\s+a\s+time)?\s*{_PLACES_AFTER}",
-        re.I,
-    )
-    # "Chill a mug and wash a plate: the mug goes on ..., the plate in ...", "..., and put both on the
-    # counter": each thing with a treatment of its own, its place said after the list (h247)
-    each = rf"(?:{verbs}){_PARTICLE}\s+{_ITEM_NP}"
-    each_placed_after = re.compile(
-        rf"{_AFTER_LEAD}(?P<items>{each}(?:(?:\s*,\s*(?:and\s+)?|\s+and\s+){each})+){_APPLIANCE}\s*"
-        rf"{_PLACES_AFTER}",
+        rf"{_AFTER_LEAD}(?P<verb>{verbs}|put|move){_PARTICLE}(?:\s+away)?\s+"
+        rf"(?P<items>{_ITEM_NP}(?:\s*,\s*{_ITEM_NP})*\s*,?\s+and\s+{_ITEM_NP})(?:\s+away)?{_APPLIANCE}(?:\s*,?\s*one\s+at\s+a\s+time)?\s*{_PLACES_AFTER}",
         re.I,
     )
     # "Heat a tomato, an egg and a potato in the microwave, one at a time, and put each of them on the
@@ -140,26 +137,41 @@ def _patterns() -> tuple[re.Pattern[str], ...]:
         r"(?:put|drop|place|set|leave|throw|toss|move)\s+)the\s+slice\b",
         re.I,
     )
-    # "Heat two mugs: one goes on the coffee maker, the other in a cabinet": a treatment of each, its own place
-    two_apart = re.compile(
-        rf"{_AFTER_LEAD}(?P<verb>{verbs}){_PARTICLE}\s+(?:two|2)\s+(?P<things>[a-z]+(?:\s+[a-z]+){{0,3}}?){_APPLIANCE}"
-        r"\s*(?:[.:;]|\s+-+\s+|,)\s*(?:the\s+)?one\s+(?:(?:goes|go)\s+)?(?P<p1>(?:in|into|on|onto|inside|under)\s+"
-        r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3}?)\s*[,;]?\s+(?:and\s+)?the\s+other(?:\s+(?!(?:in|into|on|onto|inside|under)\b)[a-z]+){0,2}\s+"
-        r"(?:(?:goes|go)\s+)?(?P<p2>(?:in|into|on|onto|inside|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3}?)"
-        r"(?=\s*(?:[.;!?]|$))",
+    return heading, outcome, item, named_first, shared, placed_after, one_at_a_time, slice_again
+
+
+@lru_cache(maxsize=1)
+def _apart_patterns() -> tuple[re.Pattern[str], re.Pattern[str]]:
+    """The lists of things each given its place after them (h247)."""
+    verbs = _treatments(VERBS)
+    # "Chill a mug and wash a plate: the mug goes on ..., the plate in ...", "..., and put both on the
+    # counter": each thing with a treatment of its own, its place said after the list (h247)
+    each = rf"(?:{verbs}){_PARTICLE}\s+{_ITEM_NP}"
+    each_placed_after = re.compile(
+        rf"{_AFTER_LEAD}(?P<items>{each}(?:(?:\s*,\s*(?:and\s+)?|\s+and\s+){each})+){_APPLIANCE}\s*"
+        rf"{_PLACES_AFTER}",
         re.I,
     )
-    return heading, outcome, item, named_first, shared, placed_after, one_at_a_time, slice_again, (
-        each_placed_after, two_apart)
+    # "Heat two mugs: one goes on the coffee maker, the other in a cabinet": each treated, each its place
+    at = r"(?:in|into|on|onto|inside|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3}?"
+    two_apart = re.compile(
+        rf"{_AFTER_LEAD}(?P<verb>{verbs}){_PARTICLE}\s+(?:two|2)\s+(?P<things>[a-z]+(?:\s+[a-z]+){{0,3}}?)"
+        rf"{_APPLIANCE}\s*(?:[.:;]|\s+-+\s+|,)\s*(?:the\s+)?one\s+(?:(?:goes|go)\s+)?(?P<p1>{at})\s*[,;]?\s+"
+        r"(?:and\s+)?the\s+other(?:\s+(?!(?:in|into|on|onto|inside|under)\b)[a-z]+){0,2}\s+(?:(?:goes|go)\s+)?"
+        rf"(?P<p2>{at})(?=\s*(?:[.;!?]|$))",
+        re.I,
+    )
+    return each_placed_after, two_apart
 
 
 def treated_lists(text: str) -> str:
     """The text with the treatments above rewritten (see the module docstring)."""
-    heading, outcome, item, named_first, shared, placed_after, one_at_a_time, slice_again, apart = _patterns()
+    heading, outcome, item, named_first, shared, placed_after, one_at_a_time, slice_again = _patterns()
+    each_placed_after, two_apart = _apart_patterns()
     text = slice_again.sub(r"\g<head>it", text)
     text = placed_after.sub(_placed_after, text)
-    text = apart[0].sub(_placed_after, text)
-    text = apart[1].sub(_two_apart, text)
+    text = each_placed_after.sub(_placed_after, text)
+    text = two_apart.sub(_two_apart, text)
     text = one_at_a_time.sub(lambda m: m["list"] if _names_things(m["list"], most=9) else m[0], text)
     text = shared.sub(_steps_shared, text)
     text = heading.sub(_distributed, text)
@@ -282,7 +294,8 @@ def _placed_after(m: re.Match[str]) -> str:
     places = _TOO.sub("", m["places"].strip())
     shared = _ALL_THERE.match(places) if "verb" not in m.groupdict() else None
     if shared is not None and _a_place(shared["place"]):
-        where: dict[int, str] | None = {k: f"{shared['prep'].lower()} {shared['place']}" for k in range(len(said))}
+        there = f"{shared['prep'].lower()} {shared['place']}"
+        where: dict[int, str] | None = dict.fromkeys(range(len(said)), there)
     else:
         where = _places_of(places, [i for _, i in said])
     if where is None:
@@ -335,7 +348,8 @@ def _two_apart(m: re.Match[str]) -> str:
     put it in B"; the text as it was unless the words name one kind of thing, several of it, and each place
     names one thing."""
     found = find_mentions(m["things"])
-    if len(found) != 1 or not found[0].plural or not all(_a_place(p.split(None, 1)[1]) for p in (m["p1"], m["p2"])):
+    places = [m[k].split(None, 1)[1] for k in ("p1", "p2")]
+    if len(found) != 1 or not found[0].plural or not all(_a_place(p) for p in places):
         return m[0]
     name, verb = found[0].entry.phrase, m["verb"].lower()
     one = f"{'an' if name[:1] in 'aeiou' else 'a'} {name}"
