@@ -23,7 +23,12 @@ is one of the grammar's treatments (`word_tables`: clean, heat, cool), so anythi
   put it on the counter" (no order: a list says none); every thing of the list takes one place, and each
   place names one thing of it by its words ("the slice" of "a potato slice"), else the text stays; "one at
   a time" after such a list ("..., one at a time, and put each of them on the counter") says nothing more;
-  "microwave a slice, then drop the slice in the sink" drops that slice ("then drop it").
+  "microwave a slice, then drop the slice in the sink" drops that slice ("then drop it");
+- the same where each thing has a treatment of its own (h247): "Chill a mug and wash a plate - the mug goes
+  on the coffee maker, the plate in the microwave" (after a stop, colon, semicolon, question mark, dash or
+  "then"; "the former" / "the latter" of two things; "plate on the shelf" without its article), or one place
+  for all ("..., and put both on the counter"); "Heat two mugs: one goes on A, the other in B" is "heat a mug
+  and put it on A, heat another mug and put it in B".
 """
 
 from __future__ import annotations
@@ -62,6 +67,19 @@ _ONCE_DONE = re.compile(
     re.I,
 )
 _TOO = re.compile(r"\s+(?:too|as\s+well|also)\s*$", re.I)
+# between the items of a list each said with its own treatment ("wash a tomato and heat a potato")
+_EACH_GAP = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+", re.I)
+# where a list whose places are said after it may begin: a sentence, a request's "please" / "could you", or
+# after a comma ("After you've done that, heat a tomato slice and an apple - the slice goes in ...")
+_AFTER_LEAD = (
+    r"(?P<lead>(?:^|(?<=[.;!?])\s+|(?<=,)\s+)"
+    r"(?:(?:then|next|now|also|first|please|pls|(?:could|can|would)\s+you(?:\s+please)?)\s*,?\s+)?)"
+)
+# the end of the list and the places said after it: a stop, colon, semicolon, question mark, dash or "then"
+_PLACES_AFTER = (
+    r"(?:[.:;?]|\s+-+\s+|,?\s+(?:and\s+)?then\b|,)\s*(?:then\s*,?\s+)?(?:and\s+(?=put|place|set|leave))?"
+    r"(?:(?:put|place|set|leave)\s+)?(?P<places>[^.;!?]+)"
+)
 
 
 def _treatments(table: dict[str, tuple[str, str]]) -> str:
@@ -102,11 +120,8 @@ def _patterns() -> tuple[re.Pattern[str], ...]:
         re.I,
     )
     placed_after = re.compile(
-        rf"(?P<lead>(?:^|(?<=[.;!?])\s+)(?:(?:then|next|now|also|first)\s*,?\s+)?)"
-        rf"(?P<verb>{verbs}|put|move){_PARTICLE}(?:\s+away)?\s+(?P<items>{_ITEM_NP}(?:\s*,\s*{_ITEM_NP})*\s*,?\s+and\s+"
-        rf"{_ITEM_NP})(?:\s+away)?{_APPLIANCE}(?:\s*,?\s*one\s+at\s+a\s+time)?\s*"
-        r"(?:[.:;]|,?\s+(?:and\s+)?then\b|,)\s*(?:then\s*,?\s+)?(?:(?:put|place|set|leave)\s+)?"
-        r"(?P<places>[^.;!?]+)",
+        rf"{_AFTER_LEAD}(?P<verb>{verbs}|put|move){_PARTICLE}(?:\s+away)?\s+"
+        rf"(?P<items>{_ITEM_NP}(?:\s*,\s*{_ITEM_NP})*\s*,?\s+and\s+{_ITEM_NP})(?:\s+away)?{_APPLIANCE}(?:\s*,?\s*one\s+at\s+a\s+time)?\s*{_PLACES_AFTER}",
         re.I,
     )
     # "Heat a tomato, an egg and a potato in the microwave, one at a time, and put each of them on the
@@ -125,11 +140,38 @@ def _patterns() -> tuple[re.Pattern[str], ...]:
     return heading, outcome, item, named_first, shared, placed_after, one_at_a_time, slice_again
 
 
+@lru_cache(maxsize=1)
+def _apart_patterns() -> tuple[re.Pattern[str], re.Pattern[str]]:
+    """The lists of things each given its place after them (h247)."""
+    verbs = _treatments(VERBS)
+    # "Chill a mug and wash a plate: the mug goes on ..., the plate in ...", "..., and put both on the
+    # counter": each thing with a treatment of its own, its place said after the list (h247)
+    each = rf"(?:{verbs}){_PARTICLE}\s+{_ITEM_NP}"
+    each_placed_after = re.compile(
+        rf"{_AFTER_LEAD}(?P<items>{each}(?:(?:\s*,\s*(?:and\s+)?|\s+and\s+){each})+){_APPLIANCE}\s*"
+        rf"{_PLACES_AFTER}",
+        re.I,
+    )
+    # "Heat two mugs: one goes on the coffee maker, the other in a cabinet": each treated, each its place
+    at = r"(?:in|into|on|onto|inside|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3}?"
+    two_apart = re.compile(
+        rf"{_AFTER_LEAD}(?P<verb>{verbs}){_PARTICLE}\s+(?:two|2)\s+(?P<things>[a-z]+(?:\s+[a-z]+){{0,3}}?)"
+        rf"{_APPLIANCE}\s*(?:[.:;]|\s+-+\s+|,)\s*(?:the\s+)?one\s+(?:(?:goes|go)\s+)?(?P<p1>{at})\s*[,;]?\s+"
+        r"(?:and\s+)?the\s+other(?:\s+(?!(?:in|into|on|onto|inside|under)\b)[a-z]+){0,2}\s+(?:(?:goes|go)\s+)?"
+        rf"(?P<p2>{at})(?=\s*(?:[.;!?]|$))",
+        re.I,
+    )
+    return each_placed_after, two_apart
+
+
 def treated_lists(text: str) -> str:
     """The text with the treatments above rewritten (see the module docstring)."""
     heading, outcome, item, named_first, shared, placed_after, one_at_a_time, slice_again = _patterns()
+    each_placed_after, two_apart = _apart_patterns()
     text = slice_again.sub(r"\g<head>it", text)
     text = placed_after.sub(_placed_after, text)
+    text = each_placed_after.sub(_placed_after, text)
+    text = two_apart.sub(_two_apart, text)
     text = one_at_a_time.sub(lambda m: m["list"] if _names_things(m["list"], most=9) else m[0], text)
     text = shared.sub(_steps_shared, text)
     text = heading.sub(_distributed, text)
@@ -214,43 +256,111 @@ def _named_first(m: re.Match[str]) -> str:
     return f"{m['lead']}{verb}{m['particle']} {m['np']}"
 
 
+_PREP_AT = r"(?P<prep>in|into|on|onto|inside|under)"
+_PLACE_NP = r"(?P<place>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,6})"
+# a thing and its place; the article may be left out ("plate on the shelf, mug on the coffee maker"), but a
+# pronoun or "both" names no one thing of the list
 _PLACE_ITEM = re.compile(
-    r"^(?P<np>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3}?)\s+(?:(?:goes|go|belongs?)\s+(?:back\s+)?)?"
-    r"(?P<prep>in|into|on|onto|inside)\s+(?P<place>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3})$",
+    r"^(?P<np>(?!(?:both|them|it|all|each|one|these|those)\b)(?:(?:the|a|an)\s+)?[a-z]+(?:\s+[a-z]+){0,3}?)\s+"
+    rf"(?:(?:goes|go|belongs?)\s+(?:back\s+)?)?{_PREP_AT}\s+{_PLACE_NP}$",
     re.I,
 )
+# one place for every thing of a list each treated on its own ("..., and put both on the counter", "leave
+# them both on the side table"; h231's "put both slices on the white table")
+_ALL_THERE = re.compile(
+    rf"^(?:both(?:\s+of\s+them|\s+[a-z]+s)?|them(?:\s+both)?)\s+{_PREP_AT}\s+{_PLACE_NP}$",
+    re.I,
+)
+# a place named by a landmark beside it ("the counter by the coffee maker") names two things
+_LANDMARK = re.compile(r"\b(?:by|near|beside|next\s+to|left\s+of|right\s+of|under|above)\s+(?:the|a)\b", re.I)
 _PLACE_GAP = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+(?=(?:the|a|an)\s)", re.I)
 _NOT_NAMING = frozenset({"the", "a", "an", "of", "piece", "slice"})
+# "Chill a plate and a potato, then put the former in the cabinet and the latter on the table"
+_FORMER_LATTER = {"the former": 0, "the latter": 1}
+
+
+def _a_place(place: str) -> bool:
+    return _names_things(place, most=2 if _LANDMARK.search(place) else 1)
 
 
 def _placed_after(m: re.Match[str]) -> str:
     """ "Heat an egg and a plate. The egg goes on the table, the plate on the counter" -> "heat an egg and
-    put it on the table, heat a plate and put it on the counter"; the text as it was unless each thing has
-    exactly one place and each place one thing."""
-    items = [i.strip() for i in _ITEM_GAP.sub("\0", m["items"]).split("\0")]
-    if len(items) < 2 or not all(_names_things(i) for i in items):
+    put it on the table, heat a plate and put it on the counter"; the same where each thing has a treatment
+    of its own ("Chill a mug and wash a plate: ...", or one place for both: "..., and put both on the
+    counter"); the text as it was unless each thing has exactly one place and each place one thing."""
+    said = _said_items(m)
+    if said is None or len(said) < 2 or not all(_names_things(i) for _, i in said):
         return m[0]
+    places = _TOO.sub("", m["places"].strip())
+    shared = _ALL_THERE.match(places) if "verb" not in m.groupdict() else None
+    if shared is not None and _a_place(shared["place"]):
+        there = f"{shared['prep'].lower()} {shared['place']}"
+        where: dict[int, str] | None = dict.fromkeys(range(len(said)), there)
+    else:
+        where = _places_of(places, [i for _, i in said])
+    if where is None:
+        return m[0]
+    steps = [f"put {i} {where[k]}" if v in {"put", "move"} else f"{v} {i} and put it {where[k]}"
+             for k, (v, i) in enumerate(said)]
+    joined = ", ".join(steps)  # as `_distributed` writes a list: no order
+    after_comma = m.string[: m.start()].rstrip().endswith(",")
+    return m["lead"] + (joined if after_comma or m["lead"].strip() else _capital(joined))
+
+
+def _said_items(m: re.Match[str]) -> list[tuple[str, str]] | None:
+    """Each thing of the list with its treatment verb: the list's one verb, or each item's own."""
+    if "verb" in m.groupdict():
+        verb = m["verb"].lower()
+        return [(verb, i.strip()) for i in _ITEM_GAP.sub("\0", m["items"]).split("\0")]
+    out = []
+    for part in _EACH_GAP.split(m["items"]):
+        said = re.match(rf"^(?P<v>[a-z]+){_PARTICLE}\s+(?P<np>.+)$", part.strip(), re.I)
+        if said is None or _base_verb(said["v"]) is None:
+            return None
+        out.append((said["v"].lower(), said["np"]))
+    return out
+
+
+def _places_of(places: str, items: list[str]) -> dict[int, str] | None:
+    """Each item's place, by the list of "the X (goes) in P" said after it; None unless each item has one."""
     where: dict[int, str] = {}
     waiting: list[str] = []  # "the plate and the pan go on the counter": both take the place
-    for part in _PLACE_GAP.sub("\0", _TOO.sub("", m["places"].strip())).split("\0"):
+    for part in _PLACE_GAP.sub("\0", places).split("\0"):
         said = _PLACE_ITEM.match(part.strip())
         if said is None and re.fullmatch(r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?", part.strip(), re.I):
             waiting.append(part.strip())
             continue
-        if said is None or not _names_things(said["place"]):
-            return m[0]
+        if said is None or not _a_place(said["place"]):
+            return None
         for np in [*waiting, said["np"]]:
             hit = [k for k, i in enumerate(items) if _same_thing(np, i)]
+            if np.lower() in _FORMER_LATTER and len(items) == 2:
+                hit = [_FORMER_LATTER[np.lower()]]
             if len(hit) != 1 or hit[0] in where:
-                return m[0]
+                return None
             where[hit[0]] = f"{said['prep'].lower()} {said['place']}"
         waiting = []
-    if waiting or len(where) != len(items):
+    return None if waiting or len(where) != len(items) else where
+
+
+def _two_apart(m: re.Match[str]) -> str:
+    """ "Heat two mugs: one goes on A, the other in B" -> "heat a mug and put it on A, heat another mug and
+    put it in B"; the text as it was unless the words name one kind of thing, several of it, and each place
+    names one thing."""
+    found = find_mentions(m["things"])
+    places = [m[k].split(None, 1)[1] for k in ("p1", "p2")]
+    if len(found) != 1 or not found[0].plural or not all(_a_place(p) for p in places):
         return m[0]
-    verb = m["verb"].lower()
-    steps = [f"put {i} {where[k]}" if verb in {"put", "move"} else f"{verb} {i} and put it {where[k]}"
-             for k, i in enumerate(items)]
-    return m["lead"] + _capital(", ".join(steps))  # as `_distributed` writes a list: no order
+    name, verb = found[0].entry.phrase, m["verb"].lower()
+    one = f"{'an' if name[:1] in 'aeiou' else 'a'} {name}"
+    joined = f"{verb} {one} and put it {m['p1']}, {verb} another {name} and put it {m['p2']}"
+    after_comma = m.string[: m.start()].rstrip().endswith(",")
+    return m["lead"] + (joined if after_comma or m["lead"].strip() else _capital(joined))
+
+
+def _base_verb(word: str) -> str | None:
+    found = VERBS.get(word.lower())
+    return found[1] if found and found[0] in _STATE else None
 
 
 def _same_thing(np: str, item: str) -> bool:
