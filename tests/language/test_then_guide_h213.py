@@ -1,7 +1,9 @@
 """Issues 28 and 23 (h213): what "then" orders, by ANNOTATION_GUIDE.md: "Then Y" -> [previous task, Y], the
 previous task "the one stated in the immediately preceding clause/sentence"; a clause with no order word of
-its own gets none; "Finally Y" after every earlier task, no transitive pairs. Where the guide leaves it open
-("A and B, then C": one clause of two tasks, or two joined by "and") the reading stays after both."""
+its own gets none; "Finally Y" after every earlier task, no transitive pairs. "A and B then C" (two clauses,
+or two items each with its own place, with or without a comma) orders C after B only, as "A, B, then C"
+(h243); where the guide leaves it open (one clause's objects sharing its words, "first A and B, then C",
+"A and B. Then C") the reading stays after both."""
 
 from __future__ import annotations
 
@@ -44,16 +46,40 @@ HOT_EGG = "heat_place Egg -> Microwave"
             "microwave, and finally put the bread on the counter",
             {(APPLE, MUG), (APPLE, BREAD), (MUG, BREAD), (HOT_EGG, BREAD)},
         ),
-        # near miss, left open by the guide: "A and B, then C" stays after both
+        # "A and B, then C" with B an item of its own place: "then" follows B (h243; before: after both)
         (
             "put the apple in the fridge and the mug in the sink, then put the egg in the microwave",
-            {(APPLE, EGG), (MUG, EGG)},
+            {(MUG, EGG)},
         ),
-        # near miss: a list that "and" closes ("A, B and C, then D") is one clause: after all of it
+        # a list that "and" closes, its items each with a place: "then" follows the last (h243)
         (
             "put the apple in the fridge, the mug in the sink and the bread on the counter, then put the egg "
             "in the microwave",
-            {(APPLE, EGG), (MUG, EGG), (BREAD, EGG)},
+            {(BREAD, EGG)},
+        ),
+        # h243, "A and B then C" / "A and B and when you're done C" (no comma): C after B only
+        (
+            "put the apple in the fridge and heat the egg and put it in the microwave then put the mug in "
+            "the sink",
+            {(HOT_EGG, MUG)},
+        ),
+        (
+            "put the apple in the fridge and the bread on the counter and when you're done put the mug in "
+            "the sink",
+            {(BREAD, MUG)},
+        ),
+        # near misses: one clause's objects sharing its place, a leading "first", a full stop: after both
+        (
+            "put the apple and the egg in the fridge then put the mug in the sink",
+            {("place Apple -> Fridge", MUG), ("place Egg -> Fridge", MUG)},
+        ),
+        (
+            "first put the apple in the fridge and the bread on the counter, then put the mug in the sink",
+            {(APPLE, MUG), (BREAD, MUG)},
+        ),
+        (
+            "put the apple in the fridge and the bread on the counter. Then put the mug in the sink.",
+            {(APPLE, MUG), (BREAD, MUG)},
         ),
     ],
 )

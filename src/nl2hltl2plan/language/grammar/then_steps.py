@@ -32,21 +32,50 @@ def _follows_a_step(u: Unit) -> bool:
     return u.seq_after_prev or (G.FINALLY, IN_SENTENCE) in u.markers
 
 
-def clause_before(tasks: Tasks, steps: list[int], opener: int, text: str) -> list[int]:
+def clause_before(tasks: Tasks, steps: list[int], opener: int, texts: tuple[str, str]) -> list[int]:
     """What "then" opening unit `opener` comes after: the step before it, or its last clause alone where a
     comma alone joins that clause to the step ("A, B, then C" / "A, B, and then C": [B, C], the guide's
     "previous task ... stated in the immediately preceding clause"), a verbless item too ("put X in A, Y in
-    B, then Z in C"). "A and B, then C" (one clause, or two joined by "and") is after both, as the guide
-    leaves it open."""
+    B, then Z in C"), and so where "and" joins it ("A and B then C", below). `texts`: the instruction as
+    read (its shared verbs restated) and as written."""
+    text, written = texts
     units = tasks.units
     last = units[opener - 1]
     same = [j for j in range(opener) if steps[j] == steps[opener - 1]]
+    step = [t for j in same for t in units[j].tasks]
     if len(same) > 1 and not last.joiner:
         return list(last.tasks)
     said, own = (tasks.specs[t].text for t in last.tasks[-2:]) if len(last.tasks) > 1 else ("", "")
     if own and _comma_alone(said, own, text):
         return [last.tasks[-1]]
-    return [t for j in same for t in units[j].tasks]
+    if len(step) < 2 or _open_step(tasks, [units[j] for j in same]):
+        return step
+    if _shared(tasks, step[-2], step[-1], written):
+        return step
+    # "A and B then C" / "A and B and when you're done C": B said apart (a clause or an item with its own
+    # place), the guide's "immediately preceding clause", as "A, B, then C"
+    return list(last.tasks) if len(same) > 1 else [last.tasks[-1]]
+
+
+def _open_step(tasks: Tasks, units: list[Unit]) -> bool:
+    """Does the step leave its tasks one clause for "then": "first A and B, then C" (the guide's "First X,
+    then Y" with X the two) or "A and B in any order, then C"?"""
+    return any(kind == G.FIRST for u in units for kind, _ in u.markers) or any(
+        says_any_order(tasks.specs[t].text) for u in units for t in u.tasks
+    )
+
+
+def _shared(tasks: Tasks, a: int, b: int, written: str) -> bool:
+    """May tasks `a` and `b` be one clause's restated items ("put the apple and the mug in the sink" reads
+    "put the apple in the sink and put the mug in the sink"): the same words but for their objects, and
+    not both said in full ("rinse the plate and put it on the shelf and rinse the cup and put it on the
+    shelf")?"""
+    frames, low = [], " ".join(written.lower().split())
+    for t in (a, b):
+        np, words = tasks.nps[t], tasks.specs[t].text.lower()
+        frames.append(" ".join(words.replace(np.text.lower(), " ", 1).split()) if np is not None else words)
+    said = [tasks.specs[t].text.lower() in low for t in (a, b)]
+    return frames[0] == frames[1] and not all(said)
 
 
 def _comma_alone(said: str, own: str, text: str) -> bool:
