@@ -50,7 +50,7 @@ def clause_before(tasks: Tasks, steps: list[int], opener: int, texts: tuple[str,
         return [last.tasks[-1]]
     if len(step) < 2 or _open_step(tasks, [units[j] for j in same]):
         return step
-    if _shared(tasks, step[-2], step[-1], written):
+    if _shared(tasks, step[-2], step[-1], written) or _added(tasks, step[-2], step[-1], text):
         return step
     # "A and B then C" / "A and B and when you're done C": B said apart (a clause or an item with its own
     # place), the guide's "immediately preceding clause", as "A, B, then C"
@@ -76,6 +76,17 @@ def _shared(tasks: Tasks, a: int, b: int, written: str) -> bool:
         frames.append(" ".join(words.replace(np.text.lower(), " ", 1).split()) if np is not None else words)
     said = [tasks.specs[t].text.lower() in low for t in (a, b)]
     return frames[0] == frames[1] and not all(said)
+
+
+def _added(tasks: Tasks, a: int, b: int, text: str) -> bool:
+    """Is task `b` added to `a`'s step by an additive word or after a semicolon ("B; also C, and when
+    finished D": D after both, h156's reading and the composer's "; also {x}", a PAR of B's step)?"""
+    low = text.lower()
+    said, own = tasks.specs[a].text.lower(), tasks.specs[b].text.lower()
+    at = low.find(said)
+    end = low.find(own, at + len(said)) if at >= 0 else -1
+    between = low[at + len(said) : end] if end >= 0 else ""
+    return ";" in between or _ADDITIVE.match(between) is not None
 
 
 def _comma_alone(said: str, own: str, text: str) -> bool:
