@@ -85,8 +85,13 @@ def _added(tasks: Tasks, a: int, b: int, text: str) -> bool:
     said, own = tasks.specs[a].text.lower(), tasks.specs[b].text.lower()
     at = low.find(said)
     end = low.find(own, at + len(said)) if at >= 0 else -1
-    between = low[at + len(said) : end] if end >= 0 else ""
-    return ";" in between or _ADDITIVE.match(between) is not None
+    return end >= 0 and joins_to_the_step(low[at + len(said) : end])
+
+
+def joins_to_the_step(between: str) -> bool:
+    """Do the words `between` two tasks add the second to the first's step ("; also", ", plus", ", as well
+    as"): a "then" after them follows both (`clause_before`, `span_order.then_after_last`)?"""
+    return ";" in between or _ADDITIVE.match(between.lower()) is not None
 
 
 def _comma_alone(said: str, own: str, text: str) -> bool:

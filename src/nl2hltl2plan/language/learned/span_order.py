@@ -175,7 +175,8 @@ def then_after_last(
     """`pairs` less those an in-sentence "then" does not state: "A and B then C" / "A and B and when you're
     done C" orders C after B only, ANNOTATION_GUIDE.md's "Then Y" -> [previous task, Y], "the one stated in
     the immediately preceding clause" (the grammar's `then_steps.clause_before`). A step that a leading
-    "first" opens ("first A and B, then C") or a new sentence ("A and B. Then C") keeps its whole step.
+    "first" opens ("first A and B, then C"), a new sentence ("A and B. Then C") or an additive word ("A,
+    plus B, then C") keeps its whole step.
 
     >>> rels, pairs = ["START", "PAR", "SEQ"], [(0, 2), (1, 2)]
     >>> then_after_last("A and B then C", [(0, 1), (6, 7), (13, 14)], rels, pairs)
@@ -183,6 +184,8 @@ def then_after_last(
     >>> then_after_last("A and B. Then C", [(0, 1), (6, 7), (14, 15)], rels, pairs)
     [(0, 2), (1, 2)]
     """
+    from nl2hltl2plan.language.grammar.then_steps import joins_to_the_step
+
     drop: set[tuple[int, int]] = set()
 
     def joined(i: int) -> bool:  # span i joined to span i - 1 inside one sentence
@@ -190,6 +193,8 @@ def then_after_last(
 
     for i, rel in enumerate(relations):
         if rel != "SEQ" or i < 2 or relations[i - 1] != "PAR" or not joined(i):
+            continue
+        if joins_to_the_step(text[spans[i - 2][1] : spans[i - 1][0]]):  # "B, plus C, then D": after both
             continue
         j = i - 1
         while relations[j] == "PAR" and joined(j):
