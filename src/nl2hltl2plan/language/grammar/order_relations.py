@@ -221,12 +221,7 @@ def _with_stated(scope: list[int], tasks: Tasks, edges: Edges) -> list[int]:
 
 
 def _step_edges(
-    k: int,
-    tasks: Tasks,
-    steps: list[int],
-    free: set[int],
-    edges: Edges,
-    written: tuple[str, list[str]],
+    k: int, tasks: Tasks, steps: list[int], free: set[int], edges: Edges, written: tuple[str, list[str]],
     instruction: str,
 ) -> None:
     """ "A and B, then C": unit `k` after the step before its own, inside one sentence: after every task of
