@@ -314,6 +314,14 @@ KNOWN_WRONG: set[str] = {
     # h227's held-out near misses (scored once, read so on main before the branch too): a verbless count
     # after a placing moves the apple to the sink (a negation's "it" reads its place since h236)
     "put the apple in the fridge two in the sink",
+    # h232's held-out plain-user set (scored once at 2dd9619e): a verbless item before "then" ("A and one on
+    # the sofa then C") keeps C after both, as four committed truths write it (users_h147dev, h154dev/held);
+    # these three truths follow the guide's "immediately preceding clause" (h243 reads the clause form so)
+    "put 2 credit cards on the armchair and one on the sofa then put two remotes on the sofa too",
+    "put 2 toilet papers on the counter and one hand towel in the bath tub and when ur done put 2 hand "
+    "towels in the tub",
+    "ok so put a remote on the couch and 2 remotes on the coffee table and then a credit card on the couch "
+    "and after that 2 credit cards on the armchair thanks",
     # h231's held-out set (scored once at 0dc0756a, no rule changed): a landmark taken as the destination;
     # one task split in two (a pointed-at source, "a slice on the plate and the plate on …"); a split
     # treatment ("… the potato goes in …, the apple in …") or "both slices" read as a second task or a count

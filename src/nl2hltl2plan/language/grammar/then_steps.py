@@ -50,11 +50,14 @@ def clause_before(tasks: Tasks, steps: list[int], opener: int, texts: tuple[str,
         return [last.tasks[-1]]
     if len(step) < 2 or _open_step(tasks, [units[j] for j in same]):
         return step
-    if _shared(tasks, step[-2], step[-1], written) or _added(tasks, step[-2], step[-1], text):
+    if len(same) < 2 or _shared(tasks, step[-2], step[-1], written):
         return step
-    # "A and B then C" / "A and B and when you're done C": B said apart (a clause or an item with its own
-    # place), the guide's "immediately preceding clause", as "A, B, then C"
-    return list(last.tasks) if len(same) > 1 else [last.tasks[-1]]
+    if _added(tasks, step[-2], step[-1], text):
+        return step
+    # "A and B then C" / "A and B and when you're done C" (no comma): B a clause of its own, the guide's
+    # "immediately preceding clause", as "A, B, then C". The committed truths keep C after both where a
+    # comma sets "then" apart ("A and B, then C") and after a verbless item ("A in X and B in Y then C")
+    return step if _comma_before(tasks, last.tasks[-1], units[opener].tasks[0], written) else list(last.tasks)
 
 
 def _open_step(tasks: Tasks, units: list[Unit]) -> bool:
@@ -92,6 +95,16 @@ def joins_to_the_step(between: str) -> bool:
     """Do the words `between` two tasks add the second to the first's step ("; also", ", plus", ", as well
     as"): a "then" after them follows both (`clause_before`, `span_order.then_after_last`)?"""
     return ";" in between or _ADDITIVE.match(between.lower()) is not None
+
+
+def _comma_before(tasks: Tasks, a: int, b: int, written: str) -> bool:
+    """Is there a comma between task `a`'s words and task `b`'s as written ("A and B, then C"; the read
+    text has "and after that" as ", then")? Words not found as written: yes (the whole step, as before)."""
+    low = " ".join(written.lower().split())
+    said, own = tasks.specs[a].text.lower(), tasks.specs[b].text.lower()
+    at = low.find(said)
+    end = low.find(own, at + len(said)) if at >= 0 else -1
+    return end < 0 or "," in low[at + len(said) : end]
 
 
 def _comma_alone(said: str, own: str, text: str) -> bool:

@@ -167,6 +167,8 @@ def _reaches(succ: dict[int, set[int]], src: int, dst: int) -> bool:
 
 _SENTENCE_END = re.compile(r"[.!?;\n]")
 _FIRST_BEFORE = re.compile(r"\bfirst\W*$", re.I)
+# a span that opens with its object: its verb left out ("and the mug in the sink")
+_VERBLESS = re.compile(r"\W*(?:the|a|an|one|two|three|four|\d+|some|another|both|my|your)\b", re.I)
 
 
 def then_after_last(
@@ -195,6 +197,11 @@ def then_after_last(
         if rel != "SEQ" or i < 2 or relations[i - 1] != "PAR" or not joined(i):
             continue
         if joins_to_the_step(text[spans[i - 2][1] : spans[i - 1][0]]):  # "B, plus C, then D": after both
+            continue
+        # as the grammar: a comma before "then" ("A and B, then C") or a verbless B ("A in X and B in Y
+        # then C") keeps the whole step (the committed truths)
+        said = text[spans[i - 1][0] : spans[i - 1][1]]
+        if "," in text[spans[i - 1][1] : spans[i][0]] or _VERBLESS.match(said):
             continue
         j = i - 1
         while relations[j] == "PAR" and joined(j):
