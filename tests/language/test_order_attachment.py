@@ -45,14 +45,25 @@ def test_a_second_reference_restricts_the_main_clause(text, order):
     assert got == order and not unread
 
 
-# ----- "A and B, then C": C after the whole step --------------------------------------------------------
+# ----- "A and B then C": C after B, the clause before "then" (h243, ANNOTATION_GUIDE.md) ----------------
+@pytest.mark.parametrize(
+    "text",
+    [
+        "put the apple in the fridge and put the egg in the sink and after that put the fork in a drawer",
+        "put the apple in the fridge and put the egg in the sink then put the fork in a drawer",
+    ],
+)
+def test_then_after_two_clauses_follows_the_last(text):
+    _, order, unread = read(text)
+    assert order == {(SINK_EGG, FORK)} and not unread
+
+
+# ----- "A and B, then C" (a comma), "first ...", "... in any order": C after the whole step ----------------
 @pytest.mark.parametrize(
     "text",
     [
         "put the apple in the fridge and put the egg in the sink, and once thats done put the fork in a "
         "drawer",
-        "put the apple in the fridge and put the egg in the sink, and after that put the fork in a drawer",
-        "put the apple in the fridge and put the egg in the sink, then put the fork in a drawer",
         "first put the apple in the fridge and put the egg in the sink, then put the fork in a drawer",
         "put the apple in the fridge and put the egg in the sink in any order, then put the fork in a drawer",
         "put the apple in the fridge. put the egg in the sink. do these in either order, then put the fork "

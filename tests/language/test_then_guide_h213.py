@@ -1,7 +1,8 @@
 """Issues 28 and 23 (h213): what "then" orders, by ANNOTATION_GUIDE.md: "Then Y" -> [previous task, Y], the
 previous task "the one stated in the immediately preceding clause/sentence"; a clause with no order word of
-its own gets none; "Finally Y" after every earlier task, no transitive pairs. Where the guide leaves it open
-("A and B, then C": one clause of two tasks, or two joined by "and") the reading stays after both."""
+its own gets none; "Finally Y" after every earlier task, no transitive pairs. "A and B then C" (two clauses,
+no comma) orders C after B only, as "A, B, then C" (h243); "A and B, then C", a verbless B, one clause's
+objects sharing its words, "first A and B, then C" and "A and B. Then C" stay after both."""
 
 from __future__ import annotations
 
@@ -44,7 +45,7 @@ HOT_EGG = "heat_place Egg -> Microwave"
             "microwave, and finally put the bread on the counter",
             {(APPLE, MUG), (APPLE, BREAD), (MUG, BREAD), (HOT_EGG, BREAD)},
         ),
-        # near miss, left open by the guide: "A and B, then C" stays after both
+        # near miss, the committed truths: "A and B, then C" (a comma) stays after both
         (
             "put the apple in the fridge and the mug in the sink, then put the egg in the microwave",
             {(APPLE, EGG), (MUG, EGG)},
@@ -54,6 +55,35 @@ HOT_EGG = "heat_place Egg -> Microwave"
             "put the apple in the fridge, the mug in the sink and the bread on the counter, then put the egg "
             "in the microwave",
             {(APPLE, EGG), (MUG, EGG), (BREAD, EGG)},
+        ),
+        # h243, "A and B then C" / "A and B and when you're done C" (no comma, B a clause): C after B only
+        (
+            "put the apple in the fridge and heat the egg and put it in the microwave then put the mug in "
+            "the sink",
+            {(HOT_EGG, MUG)},
+        ),
+        (
+            "put the apple in the fridge and put the bread on the counter and when you're done put the mug "
+            "in the sink",
+            {(BREAD, MUG)},
+        ),
+        # near miss: a verbless item ("and the bread on the counter then"): after both (the committed truths)
+        (
+            "put the apple in the fridge and the bread on the counter then put the mug in the sink",
+            {(APPLE, MUG), (BREAD, MUG)},
+        ),
+        # near misses: one clause's objects sharing its place, a leading "first", a full stop: after both
+        (
+            "put the apple and the egg in the fridge then put the mug in the sink",
+            {("place Apple -> Fridge", MUG), ("place Egg -> Fridge", MUG)},
+        ),
+        (
+            "first put the apple in the fridge and the bread on the counter, then put the mug in the sink",
+            {(APPLE, MUG), (BREAD, MUG)},
+        ),
+        (
+            "put the apple in the fridge and the bread on the counter. Then put the mug in the sink.",
+            {(APPLE, MUG), (BREAD, MUG)},
         ),
     ],
 )

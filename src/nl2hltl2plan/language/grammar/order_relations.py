@@ -46,10 +46,11 @@ ORDER_LEFT_OPEN = "say the order"
 
 
 def relate(
-    tasks: Tasks, relations: list[RelationSentence], b: TaskBuilder, text: str
+    tasks: Tasks, relations: list[RelationSentence], b: TaskBuilder, text: str, instruction: str = ""
 ) -> list[tuple[str, str]]:
     """The `before` pairs (task ids, which this step assigns). A reference that names no task but states one
-    ("after picking up the box") adds that task to `tasks`; what cannot be resolved goes to `b.unparsed`."""
+    ("after picking up the box") adds that task to `tasks`; what cannot be resolved goes to `b.unparsed`.
+    `instruction`: the words as written, before `text` restated a shared verb (`then_steps.clause_before`)."""
     edges: Edges = set()
     for x, spec in enumerate(tasks.specs):  # "put the potato in the microwave last and the apple ... first"
         if left := _ORDER_WORD_LEFT.search(spec.text):
@@ -66,7 +67,7 @@ def relate(
         _added_to_free(k, tasks, text, b)
         _then_also(k, tasks, text, b)
         _marker_edges(k, tasks, (free, loose), b, written, edges)
-        _step_edges(k, tasks, steps, free, edges, written)
+        _step_edges(k, tasks, steps, free, edges, written, instruction or text)
     if not _freed_by_a_remark(tasks.units, text):  # "First, A, B and C. Do these in any order."
         _first_edges(tasks.units, steps, loose, edges)  # not before a task whose order is left open
     _leading_last(tasks.units, steps, free, edges)
@@ -220,7 +221,8 @@ def _with_stated(scope: list[int], tasks: Tasks, edges: Edges) -> list[int]:
 
 
 def _step_edges(
-    k: int, tasks: Tasks, steps: list[int], free: set[int], edges: Edges, written: tuple[str, list[str]]
+    k: int, tasks: Tasks, steps: list[int], free: set[int], edges: Edges, written: tuple[str, list[str]],
+    instruction: str,
 ) -> None:
     """ "A and B, then C": unit `k` after the step before its own, inside one sentence: after every task of
     that step that no word lets happen at any time ("A at any time and B, then C": after B; after the
@@ -236,7 +238,7 @@ def _step_edges(
     apart = own_clause(k, tasks, text) and not leaves_order_open(u, sentences)
     if k != opener and (apart or any(t in free for t in u.tasks)):
         return
-    before = [t for t in clause_before(tasks, steps, opener, text) if t not in free] or [
+    before = [t for t in clause_before(tasks, steps, opener, (text, instruction)) if t not in free] or [
         t for j in range(opener) if steps[j] == step - 1 for t in units[j].tasks
     ]
     after = [t for t in before if t not in free and not _ANY_TIME.search(tasks.specs[t].text)]

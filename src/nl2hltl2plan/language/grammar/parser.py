@@ -76,7 +76,7 @@ def parse_instruction(
     drafts = drafting.out
     name_apart_across(drafts.drafts, grounder)
     tasks = build_tasks(drafts.drafts, drafts.units, b, text)
-    before = relate(tasks, read.relations, b, text)
+    before = relate(tasks, read.relations, b, text, instruction)
     groups = {g: members for g, members in tasks.groups.items() if len(members) > 1}
     return OfflineParse(
         instruction=instruction,

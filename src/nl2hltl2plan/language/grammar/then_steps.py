@@ -32,21 +32,79 @@ def _follows_a_step(u: Unit) -> bool:
     return u.seq_after_prev or (G.FINALLY, IN_SENTENCE) in u.markers
 
 
-def clause_before(tasks: Tasks, steps: list[int], opener: int, text: str) -> list[int]:
+def clause_before(tasks: Tasks, steps: list[int], opener: int, texts: tuple[str, str]) -> list[int]:
     """What "then" opening unit `opener` comes after: the step before it, or its last clause alone where a
     comma alone joins that clause to the step ("A, B, then C" / "A, B, and then C": [B, C], the guide's
     "previous task ... stated in the immediately preceding clause"), a verbless item too ("put X in A, Y in
-    B, then Z in C"). "A and B, then C" (one clause, or two joined by "and") is after both, as the guide
-    leaves it open."""
+    B, then Z in C"), and so where "and" joins it ("A and B then C", below). `texts`: the instruction as
+    read (its shared verbs restated) and as written."""
+    text, written = texts
     units = tasks.units
     last = units[opener - 1]
     same = [j for j in range(opener) if steps[j] == steps[opener - 1]]
+    step = [t for j in same for t in units[j].tasks]
     if len(same) > 1 and not last.joiner:
         return list(last.tasks)
     said, own = (tasks.specs[t].text for t in last.tasks[-2:]) if len(last.tasks) > 1 else ("", "")
     if own and _comma_alone(said, own, text):
         return [last.tasks[-1]]
-    return [t for j in same for t in units[j].tasks]
+    if len(step) < 2 or _open_step(tasks, [units[j] for j in same]):
+        return step
+    if len(same) < 2 or _shared(tasks, step[-2], step[-1], written):
+        return step
+    if _added(tasks, step[-2], step[-1], text):
+        return step
+    # "A and B then C" / "A and B and when you're done C" (no comma): B a clause of its own, the guide's
+    # "immediately preceding clause", as "A, B, then C". The committed truths keep C after both where a
+    # comma sets "then" apart ("A and B, then C") and after a verbless item ("A in X and B in Y then C")
+    return step if _comma_before(tasks, last.tasks[-1], units[opener].tasks[0], written) else list(last.tasks)
+
+
+def _open_step(tasks: Tasks, units: list[Unit]) -> bool:
+    """Does the step leave its tasks one clause for "then": "first A and B, then C" (the guide's "First X,
+    then Y" with X the two) or "A and B in any order, then C"?"""
+    return any(kind == G.FIRST for u in units for kind, _ in u.markers) or any(
+        says_any_order(tasks.specs[t].text) for u in units for t in u.tasks
+    )
+
+
+def _shared(tasks: Tasks, a: int, b: int, written: str) -> bool:
+    """May tasks `a` and `b` be one clause's restated items ("put the apple and the mug in the sink" reads
+    "put the apple in the sink and put the mug in the sink"): the same words but for their objects, and
+    not both said in full ("rinse the plate and put it on the shelf and rinse the cup and put it on the
+    shelf")?"""
+    frames, low = [], " ".join(written.lower().split())
+    for t in (a, b):
+        np, words = tasks.nps[t], tasks.specs[t].text.lower()
+        frames.append(" ".join(words.replace(np.text.lower(), " ", 1).split()) if np is not None else words)
+    said = [tasks.specs[t].text.lower() in low for t in (a, b)]
+    return frames[0] == frames[1] and not all(said)
+
+
+def _added(tasks: Tasks, a: int, b: int, text: str) -> bool:
+    """Is task `b` added to `a`'s step by an additive word or after a semicolon ("B; also C, and when
+    finished D": D after both, h156's reading and the composer's "; also {x}", a PAR of B's step)?"""
+    low = text.lower()
+    said, own = tasks.specs[a].text.lower(), tasks.specs[b].text.lower()
+    at = low.find(said)
+    end = low.find(own, at + len(said)) if at >= 0 else -1
+    return end >= 0 and joins_to_the_step(low[at + len(said) : end])
+
+
+def joins_to_the_step(between: str) -> bool:
+    """Do the words `between` two tasks add the second to the first's step ("; also", ", plus", ", as well
+    as"): a "then" after them follows both (`clause_before`, `span_order.then_after_last`)?"""
+    return ";" in between or _ADDITIVE.match(between.lower()) is not None
+
+
+def _comma_before(tasks: Tasks, a: int, b: int, written: str) -> bool:
+    """Is there a comma between task `a`'s words and task `b`'s as written ("A and B, then C"; the read
+    text has "and after that" as ", then")? Words not found as written: yes (the whole step, as before)."""
+    low = " ".join(written.lower().split())
+    said, own = tasks.specs[a].text.lower(), tasks.specs[b].text.lower()
+    at = low.find(said)
+    end = low.find(own, at + len(said)) if at >= 0 else -1
+    return end < 0 or "," in low[at + len(said) : end]
 
 
 def _comma_alone(said: str, own: str, text: str) -> bool:

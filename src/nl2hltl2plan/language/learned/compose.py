@@ -464,7 +464,7 @@ def synthesise(
     """`n` instructions of 1-5 spans (one floor plan each, different trials), deterministic for a seed,
     less those that would hold an under-specified annotation (`faithful.composable`) unless `said_only`
     is off (the structure model's training: spans and their order, which an unsaid slot does not touch)."""
-    from nl2hltl2plan.language.learned.span_order import before_pairs, leading_first
+    from nl2hltl2plan.language.learned.span_order import before_pairs, leading_first, then_after_last
 
     rng = random.Random(seed)
     by_plan = by_floor_plan(items)
@@ -493,7 +493,8 @@ def synthesise(
         lowered = _finish(text, rng)
         ids = [task_letter(i) for i in range(len(chosen))]
         tasks = [t.model_copy(update={"id": i, "text": ""}) for t, i in zip(said, ids, strict=True)]
-        pairs = leading_first(text, spans, rels, before_pairs(rels, targets))
+        pairs = then_after_last(text, spans, rels, before_pairs(rels, targets))
+        pairs = leading_first(text, spans, rels, pairs)
         before = [(ids[a], ids[b]) for a, b in pairs]
         drawn += 1
         if said_only and not composable(chosen):

@@ -163,3 +163,53 @@ def _reaches(succ: dict[int, set[int]], src: int, dst: int) -> bool:
             seen.add(y)
             stack.append(y)
     return False
+
+
+_SENTENCE_END = re.compile(r"[.!?;\n]")
+_FIRST_BEFORE = re.compile(r"\bfirst\W*$", re.I)
+# a span that opens with its object: its verb left out ("and the mug in the sink")
+_VERBLESS = re.compile(r"\W*(?:the|a|an|one|two|three|four|\d+|some|another|both|my|your)\b", re.I)
+
+
+def then_after_last(
+    text: str, spans: list[tuple[int, int]], relations: list[str], pairs: list[tuple[int, int]]
+) -> list[tuple[int, int]]:
+    """`pairs` less those an in-sentence "then" does not state: "A and B then C" / "A and B and when you're
+    done C" orders C after B only, ANNOTATION_GUIDE.md's "Then Y" -> [previous task, Y], "the one stated in
+    the immediately preceding clause" (the grammar's `then_steps.clause_before`). A step that a leading
+    "first" opens ("first A and B, then C"), a new sentence ("A and B. Then C") or an additive word ("A,
+    plus B, then C") keeps its whole step.
+
+    >>> rels, pairs = ["START", "PAR", "SEQ"], [(0, 2), (1, 2)]
+    >>> then_after_last("A and B then C", [(0, 1), (6, 7), (13, 14)], rels, pairs)
+    [(1, 2)]
+    >>> then_after_last("A and B. Then C", [(0, 1), (6, 7), (14, 15)], rels, pairs)
+    [(0, 2), (1, 2)]
+    """
+    from nl2hltl2plan.language.grammar.then_steps import joins_to_the_step
+
+    drop: set[tuple[int, int]] = set()
+
+    def joined(i: int) -> bool:  # span i joined to span i - 1 inside one sentence
+        return _SENTENCE_END.search(text[spans[i - 1][1] : spans[i][0]]) is None
+
+    for i, rel in enumerate(relations):
+        if rel != "SEQ" or i < 2 or relations[i - 1] != "PAR" or not joined(i):
+            continue
+        if joins_to_the_step(text[spans[i - 2][1] : spans[i - 1][0]]):  # "B, plus C, then D": after both
+            continue
+        # as the grammar: a comma before "then" ("A and B, then C") or a verbless B ("A in X and B in Y
+        # then C") keeps the whole step (the committed truths)
+        said = text[spans[i - 1][0] : spans[i - 1][1]]
+        if "," in text[spans[i - 1][1] : spans[i][0]] or _VERBLESS.match(said):
+            continue
+        j = i - 1
+        while relations[j] == "PAR" and joined(j):
+            j -= 1
+        if relations[j] not in ("START", "SEQ") or _FIRST_BEFORE.search(text[: spans[j][0]]):
+            continue
+        k = i + 1
+        while k < len(relations) and relations[k] == "PAR":
+            k += 1
+        drop |= {(x, y) for x in range(j, i - 1) for y in range(i, k)}
+    return [p for p in pairs if p not in drop]

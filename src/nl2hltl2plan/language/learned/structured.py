@@ -34,7 +34,7 @@ from nl2hltl2plan.language.content_words import categories
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grounding import find_mentions, tokens
 from nl2hltl2plan.language.learned.compose import ELIDABLE, VERB_GERUND, VERB_PARTICIPLE
-from nl2hltl2plan.language.learned.span_order import before_pairs, leading_first
+from nl2hltl2plan.language.learned.span_order import before_pairs, leading_first, then_after_last
 from nl2hltl2plan.language.learned.structure import Reading
 from nl2hltl2plan.language.order_words import first_and_last_kept, frees_an_order
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES
@@ -294,6 +294,7 @@ def combine_spans(
     relations = [s.relation for s in reading.spans]
     spans = [(s.start, s.end) for s in reading.spans]
     pairs = before_pairs(relations, [s.target for s in reading.spans])
+    pairs = then_after_last(said, spans, relations, pairs)
     for a, b in leading_first(said, spans, relations, pairs):
         before += [(x, y) for x in ids_of_span[a] for y in ids_of_span[b]]
     return tasks, sorted(set(before)), groups
