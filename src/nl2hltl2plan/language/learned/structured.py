@@ -256,11 +256,12 @@ _SAME = re.compile(r"^(?:(?:and|then|now)\s+)?(?:do\s+)?(?:the\s+)?same\s+(?:wit
 def repeat_of_two(said: str, spans: Sequence[Span], k: int) -> bool:
     """Whether span k says "do the same with X" after a sentence of two or more task spans ("heat a tomato
     slice and put it on the table, rinse a potato and put it on the table, then do the same with the
-    apple"): which task it repeats is not said, so it is left unread, as the grammar leaves it
-    (`grammar.repeats` repeats only a sentence of one plain task; h246)."""
+    apple", "...; heat a cup .... Then do the same with the mug"): which task it repeats is not said, so it
+    is left unread, as the grammar leaves it (`grammar.repeats` repeats only a sentence of one plain task;
+    h246)."""
     if k < 2 or not _SAME.match(spans[k].text.strip()):
         return False
-    return not re.search(r"[.;!?]", said[spans[k - 2].end : spans[k - 1].start])
+    return not re.search(r"[.!?]", said[spans[k - 2].end : spans[k - 1].start])
 
 
 def resolved(span: str, previous: tuple[str, BaseTaskSpec] | None) -> str:
