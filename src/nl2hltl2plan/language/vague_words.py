@@ -33,6 +33,13 @@ _VAGUE_PLACE = re.compile(
     r"\b(?:(?:put|tidy|store|stow|pack|clear)\s+(?:\w+\s+){0,3}?away|anywhere|somewhere|elsewhere|everywhere|"
     r"wherever)\b"
 )
+# "then clean up.", "and wash up after": a chore with no thing, which no base task does; the readers drop it
+# or give its verb to the thing before ("put the apple in the fridge, then wash up": a washed apple), so it
+# is named (h246); "clean up the pencils" (collect them) has its thing and is left to the readers
+_CHORE = re.compile(
+    r"\b(?:clean|wash|tidy|neaten|straighten)(?:\s+(?:it|things|everything))?\s+up\b"
+    r"(?=\s*(?:[,.;!?]|$|(?:and|then|after|afterwards|please|too|as\s+well)\b))"
+)
 _PLACE_AFTER = re.compile(r"[^,.;!?]*?\b(?:in|into|on|onto|inside|under|to)\b")
 _NUMBER = r"(?:\d+|a|an|one|two|three|four|five|six|ten|fifteen|twenty|thirty|a few|a couple of)"
 # "in a second box": the ordinal before a thing ("another box"), no time (h190); "in a second, put ..." stays
@@ -116,6 +123,8 @@ def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
         for m in _VAGUE_PLACE.finditer(lowered)
         if not (m.group(0).endswith("away") and _PLACE_AFTER.match(lowered, m.end()))  # "away in a cabinet"
     ]
+    chore = "a chore with no thing: say what to put where"
+    out += [Unread(m[0], "action", chore) for m in _CHORE.finditer(lowered)]
     out += [Unread(m.group(0), "count", "no base task takes a time") for m in _TIME.finditer(lowered)]
     out += [Unread(m[0], "place", "a choice left open: say which one") for m in _CHOICE.finditer(lowered)]
     out += [

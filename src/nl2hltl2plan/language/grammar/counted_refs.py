@@ -285,7 +285,9 @@ def _rest(text: str) -> str:
 def _other_one(text: str) -> str:
     def sub(m: re.Match[str]) -> str:
         x = _antecedent(text, m.start(), one_of=True)
-        return _cased(f"the other {_singular(x, text)}", m[0]) if x is not None else m[0]
+        if x is None or _of_two_kinds(text, x):
+            return m[0]
+        return _cased(f"the other {_singular(x, text)}", m[0])
 
     return _OTHER_ONE.sub(sub, text)
 
@@ -345,6 +347,15 @@ def _counts_after(text: str) -> str:
                 head = re.sub(r"\bthe\s+$", "", head, flags=re.I)
             text = head + said + text[x.char_end :]
     return text
+
+
+def _of_two_kinds(text: str, x: Mention) -> bool:
+    """Whether the sentence that names `x` names things of another type too ("Tomato on a plate, plate on
+    the counter. And the other on the table.": the other tomato or the other plate?): "the other" is then
+    left as said and refused by name (h246)."""
+    start = max(text.rfind(c, 0, x.char_start) for c in ".;!?\n") + 1
+    kinds = {frozenset(m.entry.types) for m in _things(text) if start <= m.char_start < x.char_end}
+    return len(kinds) > 1
 
 
 def _counted(text: str, m: Mention) -> bool:

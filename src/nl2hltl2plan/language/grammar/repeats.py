@@ -181,6 +181,9 @@ def repeated_for_another(text: str) -> str:
     text = _SAME_THEN.sub(lambda m: f"{m['head']}. Then do the same with {m['np']}", text)
     out: list[str] = []
     task = ""  # the last sentence that is not a fragment
+    # that sentence follows another task's after ";" ("heat an egg ...; heat a cup .... Then do the same
+    # with the mug."): which task is repeated is not said, so the fragment stays as said (h246)
+    shared = semicolon = False
     written = False  # the sentence split off by `_SAME_INSIDE` is kept only where its repeat is written out
     inline = _SAME_AND.sub(lambda m: _copy_inside(text, m), text)
     inline = _TOO_AND.sub(lambda m: _copy_inside(inline, m), inline)
@@ -191,7 +194,7 @@ def repeated_for_another(text: str) -> str:
         core = body.rstrip(" .;!?\n")
         said = _ORDER_LEAD.match(core)
         fragment = core[said.end() :] if said else core
-        if task and REPEAT_FRAGMENT.match(fragment):
+        if task and not shared and REPEAT_FRAGMENT.match(fragment):
             things = [m for m in find_mentions(fragment) if not m.entry.generic]
             copies = [c for c in (_with_thing(task, m, words=_phrase(fragment, m)) for m in things) if c]
             # after an order word, one thing only ("then the cup and the bowl": their own order unsaid)
@@ -204,7 +207,7 @@ def repeated_for_another(text: str) -> str:
                 out.append(lead + ". ".join(copies) + body[len(core) :])
                 written = True
                 continue
-        elsewhere = _elsewhere(task, fragment) if task else None
+        elsewhere = _elsewhere(task, fragment) if task and not shared else None
         if elsewhere:  # "Then do the same with the bowl, but put that one in the cabinet."
             lead = said.group(0) if said else core[: len(core) - len(core.lstrip())]
             said_as = elsewhere if said else elsewhere[:1].upper() + elsewhere[1:]
@@ -213,7 +216,9 @@ def repeated_for_another(text: str) -> str:
             continue
         if not REPEAT_FRAGMENT.match(fragment):
             # its order word stays with it ("After that, look at X. Then the Y too."), its question not
+            shared = bool(task) and semicolon
             task = _ASKED.sub("", fragment.strip())
+        semicolon = body.rstrip().endswith(";")
         out.append(body)
     return "".join(out) if written else text
 

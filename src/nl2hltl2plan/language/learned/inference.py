@@ -40,6 +40,7 @@ from nl2hltl2plan.language.learned.structured import (
     complete_and_accounted,
     decide,
     order_words_kept,
+    repeat_of_two,
     resolved,
     with_verb,
 )
@@ -333,10 +334,12 @@ def structure_reading(
         return None
     parsed, ambiguities = [], []
     previous: tuple[str, BaseTaskSpec] | None = None
-    for span in reading.spans:
+    for k, span in enumerate(reading.spans):
         text = with_verb(base_form(span.text), previous[0] if previous else None)
         try:
             p = _read_once(text, ctx)
+            if repeat_of_two(said, reading.spans, k):
+                return None
             if p.unparsed and (again := resolved(text, previous)) != text:
                 text = again
                 p = _read_once(text, ctx)

@@ -26,6 +26,7 @@ that does not read completely makes the whole reading incomplete.
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
@@ -35,7 +36,7 @@ from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grounding import find_mentions, tokens
 from nl2hltl2plan.language.learned.compose import ELIDABLE, VERB_GERUND, VERB_PARTICIPLE
 from nl2hltl2plan.language.learned.span_order import before_pairs, leading_first, then_after_last
-from nl2hltl2plan.language.learned.structure import Reading
+from nl2hltl2plan.language.learned.structure import Reading, Span
 from nl2hltl2plan.language.order_words import first_and_last_kept, frees_an_order
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES
 from nl2hltl2plan.language.scoring import match
@@ -250,6 +251,17 @@ def _surface(text: str, types: list[str] | None) -> str | None:
 
 
 _SAME = re.compile(r"^(?:(?:and|then|now)\s+)?(?:do\s+)?(?:the\s+)?same\s+(?:with|for)\b", re.I)
+
+
+def repeat_of_two(said: str, spans: Sequence[Span], k: int) -> bool:
+    """Whether span k says "do the same with X" after a sentence of two or more task spans ("heat a tomato
+    slice and put it on the table, rinse a potato and put it on the table, then do the same with the
+    apple", "...; heat a cup .... Then do the same with the mug"): which task it repeats is not said, so it
+    is left unread, as the grammar leaves it (`grammar.repeats` repeats only a sentence of one plain task;
+    h246)."""
+    if k < 2 or not _SAME.match(spans[k].text.strip()):
+        return False
+    return not re.search(r"[.!?]", said[spans[k - 2].end : spans[k - 1].start])
 
 
 def resolved(span: str, previous: tuple[str, BaseTaskSpec] | None) -> str:
