@@ -36,7 +36,7 @@ def _time() -> re.Pattern[str]:
     words = {kind: "|".join(sorted(ws)) for kind, ws in word_categories("frame_times.txt").items()}
     when = rf"(?:{words['when']}|{words['part']})s?"
     return re.compile(
-        rf"\b(?:(?:{words['opener']})\s+)?(?:(?:the|this|next)\s+)?{when}(?:\s+{when})*\b"
+        rf"\b(?:(?:{words['opener']})\s+)?(?:(?:the|this|next|last(?=\s+(?:{words['part']})))\s+)?{when}(?:\s+{when})*\b"
         rf"|\bby\s+\d{{1,2}}(?:[:.]\d\d)?\s*(?:am|pm|o'?clock)?(?=\s*(?:[,.!?;:]|$|please\b|{when}\b))",
         re.IGNORECASE,
     )
@@ -75,15 +75,20 @@ def _times_dropped(sentence: str, seen: Dropped) -> str:
 
 
 def frames_dropped(
-    text: str, names: frozenset[str], dropped: list[str] | None = None, times: bool = False
+    text: str,
+    names: frozenset[str],
+    dropped: list[str] | None = None,
+    times: bool = False,
+    greeted: bool = False,
 ) -> str:
     """`text` without the sentences, labels, leading and closing phrases that name nothing a task needs
     (`handover_discourse.empty`, the world's `names` as content words): "Breathe in, friends.", "Campers,
     ...", "..., buddies!", "Carrot duty: the carrot goes ..."; with `times`, also those that only say when
     the request is for (see the module docstring). What only the general filler rule drops is added to
-    `dropped`; the greetings and thanks of the lists are left to each reader's own policy
-    (`courtesy.without_greetings`)."""
-    seen = Dropped(dropped, names, only_general=True)
+    `dropped`. The greetings and thanks of the lists are left to each reader's own policy
+    (`courtesy.without_greetings`), unless the reader applied it before (`greeted`): then what the lists
+    alone find empty ("Hi love - ...", left by that policy) is dropped too, and added to `dropped`."""
+    seen = Dropped(dropped, names, only_general=not greeted, every=greeted)
     sentences = _SENTENCE_END.split(text.strip())
     kind = _NUMBERED.match(sentences[0]) if sentences else None
     again = kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[kind.end() :], re.IGNORECASE)
