@@ -21,9 +21,9 @@ from handover_specs import assert_refused_by_name, assert_written_spec
 from rephrasings import DEV_H235
 from test_tabletop import TASKS, refused, signature
 
+from nl2hltl2plan.language.frame_drops import frames_dropped
 from nl2hltl2plan.language.frame_filler import filler
 from nl2hltl2plan.language.handover_discourse import empty
-from nl2hltl2plan.language.frame_drops import frames_dropped
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.suites.handover.handover_bench import instance
 from nl2hltl2plan.worlds import load_world

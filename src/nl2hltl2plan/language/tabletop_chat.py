@@ -19,7 +19,8 @@ Read before any reader sees the text (`TabletopReader.as_read`), each as the pla
 - a sentence, leading or closing phrase that names nothing a task needs ("Breathe in, friends.", "Campers,
   ...", "..., buddies!", "Yo chat, level 1: ...") and a label that says again its sentence's names
   ("Carrot duty: the carrot goes ...") are removed by every reader's general filler rule
-  (`frame_drops.frames_dropped`: `handover_discourse.empty`, `frame_filler`, h235), and said in the result's notes.
+  (`frame_drops.frames_dropped`: `handover_discourse.empty`, `frame_filler`, h235), and said in the
+  result's notes.
 
 Chat shorthand ("n" for "and", "u" for "you") is read before, in every world (`spelling.shorthand_read`).
 The words of a leave are `tabletop_chat.txt`'s.

@@ -140,9 +140,10 @@ def _thing_words(text: str) -> frozenset[str]:
 class _HouseholdReader(SharedGrammar):
     """The household (ALFRED) floor plans: the shared grammar, with "Q: ... A: ..." read as the
     instruction the answers state (`headings.answered`), greetings and thanks dropped
-    (`courtesy.without_greetings`), what names nothing a task needs dropped as frame by every reader's rule
-    (`frame_drops`: a note's name, label or time, "Liam, ...", "Today, please."), colon lists, topic questions and treated "respectively" lists written
-    out (`household_forms`), descriptive names read with the floor plan's types (`household_words`),
+    (`courtesy.without_greetings`), what names nothing a task needs dropped as frame by every reader's
+    rule (`frame_drops`: a note's name, label or time, "Liam, ...", "Today, please.", each said in the
+    assumptions), colon lists, topic questions and treated "respectively" lists written out
+    (`household_forms`), descriptive names read with the floor plan's types (`household_words`),
     self-corrections applied (`self_corrections.corrected`), "... respectively" lists written out
     (`respectively.distributed`) and an order said by step number applied (`numbered_steps.step_order`)."""
 
