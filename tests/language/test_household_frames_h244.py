@@ -34,7 +34,7 @@ def read(text: str) -> tuple[list[str], list[tuple[str, str]], list[str], list[s
         (f"For Saturday: {REQUEST} Love, Mum", "For Saturday"),
         (f"Shopping day tomorrow. {REQUEST}", "Shopping day tomorrow"),
         (f"{REQUEST} Today, please.", "Today, please"),
-        (f"Hi Sam - for Tuesday, {REQUEST[0].lower()}{REQUEST[1:]}", "for Tuesday"),
+        (f"For Tuesday, {REQUEST[0].lower()}{REQUEST[1:]}", "For Tuesday"),
         (f"{REQUEST[:-1]}, by 5 please.", "by 5 please"),
     ],
 )

@@ -75,20 +75,16 @@ def _times_dropped(sentence: str, seen: Dropped) -> str:
 
 
 def frames_dropped(
-    text: str,
-    names: frozenset[str],
-    dropped: list[str] | None = None,
-    times: bool = False,
-    greeted: bool = False,
+    text: str, names: frozenset[str], dropped: list[str] | None = None, times: bool = False
 ) -> str:
     """`text` without the sentences, labels, leading and closing phrases that name nothing a task needs
     (`handover_discourse.empty`, the world's `names` as content words): "Breathe in, friends.", "Campers,
     ...", "..., buddies!", "Carrot duty: the carrot goes ..."; with `times`, also those that only say when
     the request is for (see the module docstring). What only the general filler rule drops is added to
-    `dropped`. The greetings and thanks of the lists are left to each reader's own policy
-    (`courtesy.without_greetings`), unless the reader applied it before (`greeted`): then what the lists
-    alone find empty ("Hi love - ...", left by that policy) is dropped too, and added to `dropped`."""
-    seen = Dropped(dropped, names, only_general=not greeted, every=greeted)
+    `dropped` (a time fragment too); what the lists alone find empty is left to each reader's own policy
+    for greetings and thanks (`courtesy.without_greetings`): dropping it here would drop, unsaid, the
+    words the readers read ("First, though, ...", "Oh, and also ...")."""
+    seen = Dropped(dropped, names, only_general=True)
     sentences = _SENTENCE_END.split(text.strip())
     kind = _NUMBERED.match(sentences[0]) if sentences else None
     again = kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[kind.end() :], re.IGNORECASE)

@@ -67,13 +67,11 @@ class Dropped(NamedTuple):
     """Where the general filler rule's drops are written (`dropped`, shown in the result's notes), the
     world's own names, each word a content word (`names`: "orange", "plate" in the tabletop world), and
     whether only what the lists alone keep is dropped (`only_general`: a reader with its own policy for
-    listed greetings and thanks, the tabletop's `courtesy.without_greetings`), and whether what the lists
-    drop is written too (`every`: the household reader says every drop in its assumptions)."""
+    listed greetings and thanks, the tabletop's `courtesy.without_greetings`)."""
 
     dropped: list[str] | None = None
     names: frozenset[str] = frozenset()
     only_general: bool = False
-    every: bool = False
 
 
 PART_BREAK = re.compile(r",|;|\s[-–—]+\s")  # what sets a part of a fragment off

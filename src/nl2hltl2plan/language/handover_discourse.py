@@ -248,7 +248,7 @@ def frame_gone(fragment: str, seen: Dropped, shown: str | None = None, **where: 
     if not empty(fragment, names=seen.names, **where):
         return False
     listed = empty(fragment, general=False, names=seen.names, **where)
-    if seen.dropped is not None and (seen.every or not listed):
+    if seen.dropped is not None and not listed:
         seen.dropped.append(" ".join((shown or fragment).split()).strip(" ,.!?;:"))
     return not (listed and seen.only_general)
 

@@ -155,7 +155,7 @@ class _HouseholdReader(SharedGrammar):
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
         text = without_greetings(answered(" ".join(lines)), _names_a_thing)
         self.frames = []
-        text = frames_dropped(text, _thing_words(text), self.frames, times=True, greeted=True)
+        text = frames_dropped(text, _thing_words(text), self.frames, times=True)
         # "Mom says put ...", "P.S.", "I was hoping you could"; "the mug stays put" is "don't move the mug"
         return unmoved_said(untreated_said(instead_said(without_framing(without_reasons(text)))))
 
