@@ -97,7 +97,8 @@ def frames_dropped(
             if dropped is not None:
                 dropped.append(sentence.strip(" ,.!?;:"))
             continue
-        said = tails_dropped(heads_dropped(sentence, header, seen), seen).strip()
+        # (a phrase dropped between commas leaves one comma: "First, though, ..." is "First, ...")
+        said = re.sub(r",\s*,", ",", tails_dropped(heads_dropped(sentence, header, seen), seen)).strip()
         if times:
             said = tails_dropped(heads_dropped(_times_dropped(said, seen), header, seen), seen).strip()
         if said != sentence.strip() and frame_gone(said, seen, whole=True, header=header):
