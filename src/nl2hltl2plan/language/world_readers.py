@@ -35,7 +35,7 @@ import re
 from collections.abc import Callable
 from typing import Protocol
 
-from nl2hltl2plan.language.content_words import Unread
+from nl2hltl2plan.language.content_words import Unread, vocabulary
 from nl2hltl2plan.language.courtesy import (
     courtesy_unread,
     without_framing,
@@ -132,9 +132,13 @@ def _names_a_thing(name: str) -> bool:
 
 
 def _thing_words(text: str) -> frozenset[str]:
-    """The words of `text` that name a thing of the household lexicon alone ("card", "clock"): a frame
-    fragment with one is never dropped."""
-    return frozenset(w for w in re.findall(r"[a-z]+", text.lower()) if find_mentions(w))
+    """The words of `text` that name a thing of the household lexicon alone ("card", "clock") or a
+    treatment ("rinsed"): a frame fragment with one is never dropped."""
+    words = re.findall(r"[a-z]+", text.lower())
+    # and a treatment said as a participle ("a bar of soap, rinsed, ..."): the verb's own word
+    verbs = frozenset().union(*vocabulary().values())
+    treated = {w for w in words if w.endswith("ed") and {w[:-1], w[:-2], w[:-3]} & verbs}
+    return frozenset(w for w in words if find_mentions(w)) | treated
 
 
 class _HouseholdReader(SharedGrammar):
