@@ -1,6 +1,6 @@
 """h235 (issues 24, 28): a frame reader that generalises. A sentence, label, vocative or aside that names
 nothing a task needs is dropped as frame by one rule (`frame_filler.filler`, used by
-`handover_discourse.empty` and, through it, by the tabletop reader's `tabletop_chat.frames_dropped`):
+`handover_discourse.empty` and, through it, by the tabletop reader's `frame_drops.frames_dropped`):
 every word is a listed frame word or general English filler (a word English uses as more than a noun,
 outside a thing's or place's phrase; a noun only where it addresses the listeners or in a label), and none
 is a content word, a world's name, a word that adds, waits, hedges or says a time or an order
@@ -21,9 +21,9 @@ from handover_specs import assert_refused_by_name, assert_written_spec
 from rephrasings import DEV_H235
 from test_tabletop import TASKS, refused, signature
 
+from nl2hltl2plan.language.frame_drops import frames_dropped
 from nl2hltl2plan.language.frame_filler import filler
 from nl2hltl2plan.language.handover_discourse import empty
-from nl2hltl2plan.language.tabletop_chat import frames_dropped
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.suites.handover.handover_bench import instance
 from nl2hltl2plan.worlds import load_world
@@ -96,7 +96,7 @@ def test_tabletop_frames_and_object_labels_give_the_tasks_and_order(task_id: int
 
 def test_a_tabletop_label_that_names_no_object_of_its_sentence_stays() -> None:
     # "Carrot duty:" above a sentence about the orange is no header of it (left to the tabletop readers)
-    kinds = {"orange": False, "carrot": False, "yellow plate": True}
+    kinds = frozenset({"orange", "carrot", "yellow", "plate"})  # the world's names, word by word
     text = "Carrot duty: put the orange on the yellow plate."
     assert frames_dropped(text, kinds) == text
     dropped: list[str] = []

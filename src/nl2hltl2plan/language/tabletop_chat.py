@@ -19,7 +19,8 @@ Read before any reader sees the text (`TabletopReader.as_read`), each as the pla
 - a sentence, leading or closing phrase that names nothing a task needs ("Breathe in, friends.", "Campers,
   ...", "..., buddies!", "Yo chat, level 1: ...") and a label that says again its sentence's names
   ("Carrot duty: the carrot goes ...") are removed by every reader's general filler rule
-  (`frames_dropped`: `handover_discourse.empty`, `frame_filler`, h235), and said in the result's notes.
+  (`frame_drops.frames_dropped`: `handover_discourse.empty`, `frame_filler`, h235), and said in the
+  result's notes.
 
 Chat shorthand ("n" for "and", "u" for "you") is read before, in every world (`spelling.shorthand_read`).
 The words of a leave are `tabletop_chat.txt`'s.
@@ -34,8 +35,8 @@ import re
 
 from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.courtesy import without_greetings
-from nl2hltl2plan.language.frame_filler import Dropped
-from nl2hltl2plan.language.handover_discourse import frame_gone, frame_words, heads_dropped, tails_dropped
+from nl2hltl2plan.language.frame_drops import frames_dropped
+from nl2hltl2plan.language.handover_discourse import frame_words
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
 _FIND = re.compile(
@@ -92,39 +93,12 @@ def _document_label_dropped(text: str) -> str:
     return text[label.end() :]
 
 
-_SENTENCE_END = re.compile(r"(?<=[A-Za-z][.!?])\s+")  # not after a list's number ("1. Carrot ...")
-# a record's kind and number opening the text ("Level 1:", "Cabin 4,"): a header unless the kind numbers
-# another part of the text too ("Task 1: ... Task 2: ...": the steps' labels)
-_NUMBERED = re.compile(r"^\s*(?:[A-Za-z]+\s+){0,2}?([A-Za-z]+)\s+(?:no\.?\s+|number\s+)?#?\d+\b")
-
-
-def frames_dropped(text: str, kinds: dict[str, bool], dropped: list[str] | None = None) -> str:
-    """`text` without the sentences, labels, leading and closing phrases that name nothing a task needs,
-    by the handover reader's rule (`handover_discourse.empty`, the world's names as content words):
-    "Breathe in, friends.", "Campers, ...", "..., buddies!", "Carrot duty: the carrot goes ..."; what only the
-    general filler rule drops is added to `dropped`."""
-    seen = Dropped(dropped, frozenset(w for name in kinds for w in name.lower().split()), only_general=True)
-    sentences = _SENTENCE_END.split(text.strip())
-    kind = _NUMBERED.match(sentences[0]) if sentences else None
-    again = kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[kind.end() :], re.IGNORECASE)
-    out = []
-    for k, sentence in enumerate(sentences):
-        header = k == 0 and not again
-        if frame_gone(sentence, seen, whole=True, header=header):
-            continue
-        said = tails_dropped(heads_dropped(sentence, header, seen), seen).strip()
-        if said != sentence.strip() and frame_gone(said, seen, whole=True, header=header):
-            continue  # what is left of it is frame too ("Campers, gather round!": "gather round!")
-        end = sentence.rstrip()[-1:]
-        out.append(said + end if end in ".!?" and not said.endswith(end) else said)
-    return " ".join(s for s in out if s)
-
-
 def chat_read(text: str, kinds: dict[str, bool], dropped: list[str] | None = None) -> str:
     """`text` with its chat forms read as plain words (see the module docstring); `kinds`: each object or
     plate name in words -> is it a plate (a sign-off's name that is a word of one stays); what the general
     filler rule drops is added to `dropped`."""
-    text = frames_dropped(_document_label_dropped(text), kinds, dropped)
+    names = frozenset(w for name in kinds for w in name.lower().split())
+    text = frames_dropped(_document_label_dropped(text), names, dropped)
     text = _FIND.sub(lambda m: f"{m['order']} you like", text)
     text = _YOURS.sub(lambda m: f"{m['head']} they're {m['all'] or 'all'} there", text)  # "in there": there
     text = _ON_IT.sub(r"\g<head>there", text)

@@ -31,16 +31,19 @@ imported only when that world is read (the handover reader's pattern tables cost
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from typing import Protocol
 
-from nl2hltl2plan.language.content_words import Unread
+from nl2hltl2plan.language.content_words import Unread, vocabulary
 from nl2hltl2plan.language.courtesy import (
     courtesy_unread,
     without_framing,
     without_greetings,
     without_reasons,
 )
+from nl2hltl2plan.language.frame_drops import frames_dropped
+from nl2hltl2plan.language.frame_filler import frame_note
 from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.headings import answered, note_counts
 from nl2hltl2plan.language.household_forms import household_forms
@@ -128,20 +131,35 @@ def _names_a_thing(name: str) -> bool:
     return bool(find_mentions(name.lower()))
 
 
+def _thing_words(text: str) -> frozenset[str]:
+    """The words of `text` that name a thing of the household lexicon alone ("card", "clock") or a
+    treatment ("rinsed"): a frame fragment with one is never dropped."""
+    words = re.findall(r"[a-z]+", text.lower())
+    # and a treatment said as a participle ("a bar of soap, rinsed, ..."): the verb's own word
+    verbs = frozenset().union(*vocabulary().values())
+    treated = {w for w in words if w.endswith("ed") and {w[:-1], w[:-2], w[:-3]} & verbs}
+    return frozenset(w for w in words if find_mentions(w)) | treated
+
+
 class _HouseholdReader(SharedGrammar):
     """The household (ALFRED) floor plans: the shared grammar, with "Q: ... A: ..." read as the
     instruction the answers state (`headings.answered`), greetings and thanks dropped
-    (`courtesy.without_greetings`), colon lists, topic questions and treated "respectively" lists written
-    out (`household_forms`), descriptive names read with the floor plan's types (`household_words`),
+    (`courtesy.without_greetings`), what names nothing a task needs dropped as frame by every reader's
+    rule (`frame_drops`: a note's name, label or time, "Liam, ...", "Today, please.", each said in the
+    assumptions), colon lists, topic questions and treated "respectively" lists written out
+    (`household_forms`), descriptive names read with the floor plan's types (`household_words`),
     self-corrections applied (`self_corrections.corrected`), "... respectively" lists written out
     (`respectively.distributed`) and an order said by step number applied (`numbered_steps.step_order`)."""
 
     def __init__(self, world: World) -> None:
         self.world = world
+        self.frames: list[str] = []  # what the general filler rule drops, for `notes`
 
     def as_read(self, lines: list[str]) -> str:  # greetings and thanks as every reader drops them; the
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
         text = without_greetings(answered(" ".join(lines)), _names_a_thing)
+        self.frames = []
+        text = frames_dropped(text, _thing_words(text), self.frames, times=True)
         # "Mom says put ...", "P.S.", "I was hoping you could"; "the mug stays put" is "don't move the mug"
         return unmoved_said(untreated_said(instead_said(without_framing(without_reasons(text)))))
 
@@ -150,7 +168,8 @@ class _HouseholdReader(SharedGrammar):
         return distributed(corrected(step_order(named), household_roles(self.world)))
 
     def notes(self, instruction: str) -> list[str]:
-        return descriptive_name_notes(household_forms(instruction), set(self.world.object_types()))
+        named = descriptive_name_notes(household_forms(instruction), set(self.world.object_types()))
+        return [*named, frame_note(self.frames)] if self.frames else named
 
     def unused(self, res: LanguageResult) -> list[Unread]:
         """A note's heading that counts its jobs ("Kiddo, three jobs: ...", dropped with the framing around
