@@ -228,9 +228,10 @@ def _respellable(word: str) -> bool:
 
 def _american(low: str) -> list[str]:
     """The word and its American spellings ("colour", "neighbours", "normalised", "marvellous",
-    "travellers", "centre"): the word list is American, and a British spelling is no misspelling."""
+    "travellers"): the word list is American, and a British spelling is no misspelling ("-tre" is left:
+    "aftre" is "after" misspelt)."""
     out = [low, low.replace("our", "or"), re.sub(r"is(e|ed|es|ing|ation)$", r"iz\1", low)]
-    return [*out, re.sub(r"ll(ed|ing|ous|ers?|ors?)$", r"l\1", low), re.sub(r"tre(s?)$", r"ter\1", low)]
+    return [*out, re.sub(r"ll(ed|ing|ous|ers?|ors?)$", r"l\1", low)]
 
 
 def american(word: str) -> str:
