@@ -111,8 +111,11 @@ def test_an_order_said_by_step_number(kitchen, said):
         ),
         ("put the apple in the fridge and the mug in the sink. Step 1 first.", "does not number"),
         # (a step outside the list; "Do it." names nothing and is dropped as frame since h244)
-        ("Put the mug in the cabinet. 1. put the apple in the fridge 2. put the egg in the sink. Step 2 first.",
-         "outside the"),
+        (
+            "Put the mug in the cabinet. 1. put the apple in the fridge 2. put the egg in the sink. "
+            "Step 2 first.",
+            "outside the",
+        ),
     ],
 )
 def test_an_order_by_step_number_that_cannot_be_read_is_refused(kitchen, text, named):
