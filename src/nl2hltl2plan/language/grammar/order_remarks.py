@@ -107,23 +107,8 @@ def order_remark(sentence: str, before: str | None = None) -> list[Relation] | N
     >>> order_remark("Put the mug in the sink first") is None
     True
     """
-    said = _SAID_PLAINLY.get(sentence.strip(" .!"))
-    read = said if said is not None else _read(sentence, before)
+    read = _read(sentence, before)  # a plain "X first" of `remarks_said_plainly` reads as it was written
     return None if read is None else sorted((r for r, _ in read), key=lambda r: r[0] == "free")
-
-
-# the remarks `remarks_said_plainly` wrote, by the plain sentence, with what it read in them: the rules'
-# step (`sentences.read_sentences`, on the normalised text, a string) takes them from here, not parsing them
-# again; a sentence a later rewrite changed is not here and is parsed (the same relations: `_plain`). Only
-# what the sentence alone decides is kept (not "X whenever", which needs X named before it).
-_SAID_PLAINLY: dict[str, list[tuple[Relation, str]]] = {}
-_SAID_PLAINLY_MAX = 4096
-
-
-def _said_plainly(plain: str, read: list[tuple[Relation, str]]) -> None:
-    if len(_SAID_PLAINLY) >= _SAID_PLAINLY_MAX:
-        _SAID_PLAINLY.clear()
-    _SAID_PLAINLY[plain.strip(" .!")] = read
 
 
 def _read(sentence: str, before: str | None = None) -> list[tuple[Relation, str]] | None:
@@ -186,8 +171,6 @@ def remarks_said_plainly(text: str) -> str:
             read = [(r, s) for r, p in read if (s := _plain(r[0], r[1], p))]
             plain = ", ".join(s for _, s in read)
             said = lead + plain + end if plain else ""
-        if read and all(r[0] != "any" for r, _ in read):  # "any" hangs on the text before: parsed in place
-            _said_plainly(said, read)
         out.append(head + said)
     return "".join(out)
 
