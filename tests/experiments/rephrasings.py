@@ -2816,3 +2816,61 @@ DEV_H241: dict[str, dict[int, list[str]]] = {
             "apple go in the blue plate."],
     },
 }
+
+
+# h250's held-out batch (session 32, issues 28 and 24): four rephrasings of each of the paper's four tabletop
+# tasks, one per voice (an estate agent, a zookeeper at feeding time, an accountant's ledger, a barista),
+# voices no batch above uses; written without reading the reader's code or trying any line, committed before
+# any scoring and scored once, unchanged (results/experiments/h250.md). The expected reading of each line is
+# its task's ground truth (suites/tabletop/tabletop_tasks.json), as listed above HELD_H210.
+HELD_H250: dict[str, dict[int, list[str]]] = {
+    "estate_agent": {
+        1: ["Let me show you the listings. The blue plate is the ideal home for the green apple, and the "
+            "yellow plate is move-in ready for the orange, so please move each of them in. A real steal!"],
+        2: ["Three properties, three new owners! The green apple is moving into the pink plate, the "
+            "orange into the yellow plate and the red apple into the blue plate. Who moves in first is "
+            "entirely flexible."],
+        3: ["Great news, every plate on this table has a buyer: put the carrot in the blue plate, the "
+            "orange in the yellow plate, the green apple in the green plate and the red apple in the pink "
+            "plate. The closings can happen in any order."],
+        4: ["The yellow plate is first on the market: settle the green apple and the orange in it, either "
+            "one first. Only once both have moved in does the blue plate open up, and then the carrot and "
+            "the red apple go into it, again in any order. Location, location, location!"],
+    },
+    "zookeeper": {
+        1: ["Feeding time, everyone! The green apple goes to the blue plate and the orange goes to the "
+            "yellow plate. Mind your fingers."],
+        2: ["Right, team, here's today's feeding chart: green apple in the pink plate, orange in the "
+            "yellow plate, red apple in the blue plate. It doesn't matter which one goes out first."],
+        3: ["Before the gates open, we need the carrot in the blue plate, the orange in the yellow plate, "
+            "the green apple in the green plate and the red apple in the pink plate. Do them in any order "
+            "you like, just keep the enclosure tidy."],
+        4: ["Morning round first: drop the green apple and the orange into the yellow plate, in either "
+            "order. When both of those are in, do the afternoon round: the carrot and the red apple into "
+            "the blue plate, again in either order."],
+    },
+    "accountant_ledger": {
+        1: ["Per the ledger, two entries to post: green apple posted to the blue plate, orange posted to "
+            "the yellow plate. That balances the books."],
+        2: ["Please reconcile the following three items: the green apple is allocated to the pink plate, "
+            "the orange to the yellow plate and the red apple to the blue plate. The posting order is "
+            "immaterial."],
+        3: ["Year-end close, four line items: carrot to the blue plate; orange to the yellow plate; green "
+            "apple to the green plate; red apple to the pink plate. Book them in any sequence."],
+        4: ["Quarter one: transfer the green apple and the orange into the yellow plate, in either order. "
+            "Quarter two opens only after both are booked: transfer the carrot and the red apple into the "
+            "blue plate, in either order as well."],
+    },
+    "barista": {
+        1: ["Order up! One green apple on the blue plate and one orange on the yellow plate, please."],
+        2: ["Okay, I've got three orders for you: green apple on the pink plate, orange on the yellow "
+            "plate, red apple on the blue plate. Serve them in whatever order, they're all for the same "
+            "table."],
+        3: ["Busy morning! Can you plate these up for me: carrot on the blue plate, orange on the yellow "
+            "plate, green apple on the green plate and red apple on the pink plate? They can go out in "
+            "any order."],
+        4: ["First, the green apple and the orange go on the yellow plate, either one first. Once that "
+            "plate's ready, the carrot and the red apple go on the blue plate, in any order. Thanks, "
+            "you're a star."],
+    },
+}
