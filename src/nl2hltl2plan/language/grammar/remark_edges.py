@@ -19,7 +19,7 @@ REMARK = "remark_"  # the kinds `sentences.read_sentences` gives the relations o
 _SKIP = frozenset({"the", "a", "an", "please", "do", "all"})
 _TASK_NOUNS = frozenset({"one", "job", "task", "thing", "bit", "stuff", "part"})
 _PLURAL_NOUNS = frozenset({"ones", "jobs", "tasks", "things", "bits", "parts"})
-_THAT = frozenset({"that", "this", "it"})
+_THAT = frozenset({"that", "this", "it", "those", "these"})  # "do those first": the sentence before
 _COUNTS = {"two": 2, "three": 3, "2": 2, "3": 3}
 _TREATED = {"clean": "clean_place", "heat": "heat_place", "cool": "cool_place"}  # a treatment verb's task
 
