@@ -39,9 +39,9 @@ def until_first_at(text: str, at: int) -> bool:
     start += len(text[start:]) - len(text[start:].lstrip())
     return UNTIL_FIRST.match(text, start) is not None
 
-# "With the bat done, Y" / "Whenever the vase is sorted, Y" / "Once the black table is sorted, Y" / "With the mug
-# out of the way, Y": a thing's task said to be finished opens a reference, as "Once the bat is done, Y" does (the
-# words that say a step is finished: done, sorted, handled, taken care of ...;
+# "With the bat done, Y" / "Whenever the vase is sorted, Y" / "Once the black table is sorted, Y" / "With
+# the mug out of the way, Y": a thing's task said to be finished opens a reference, as "Once the bat is
+# done, Y" does (the words that say a step is finished: done, sorted, handled, taken care of ...;
 # `grammar.order_phrases.finished_thing` reads it)
 _FINISHED = (
     r"(?:done|finished|complete|completed|sorted(?:\s+out)?|handled|settled|taken\s+care\s+of|dealt\s+with|"

@@ -94,7 +94,8 @@ def read_sentences(text: str) -> Sentences:
     out = Sentences()
     for index, (sentence, start) in enumerate(split_sentences(text)):
         markers, body = strip_leading(sentence)
-        if (one := first_last_sentence(sentence)) is not None:  # its index: "That one first." names the one before
+        # with its index: "That one first." names the task of the sentence before
+        if (one := first_last_sentence(sentence)) is not None:
             out.relations.append(RelationSentence(one.kind, one.a, one.b, index))
             continue
         rel = relation_sentence(body)
