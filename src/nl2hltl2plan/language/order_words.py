@@ -39,15 +39,16 @@ def until_first_at(text: str, at: int) -> bool:
     start += len(text[start:]) - len(text[start:].lstrip())
     return UNTIL_FIRST.match(text, start) is not None
 
-# "With the bat done, Y" / "Whenever the vase is sorted, Y" / "With the mug out of the way, Y": a thing's
-# task said to be finished opens a reference, as "Once the bat is done, Y" does (the words that say a step
-# is finished: done, sorted, handled, taken care of ...; `grammar.order_phrases.finished_thing` reads it)
+# "With the bat done, Y" / "Whenever the vase is sorted, Y" / "Once the black table is sorted, Y" / "With
+# the mug out of the way, Y": a thing's task said to be finished opens a reference, as "Once the bat is
+# done, Y" does (the words that say a step is finished: done, sorted, handled, taken care of ...;
+# `grammar.order_phrases.finished_thing` reads it)
 _FINISHED = (
     r"(?:done|finished|complete|completed|sorted(?:\s+out)?|handled|settled|taken\s+care\s+of|dealt\s+with|"
     r"out\s+of\s+the\s+way|squared\s+away|in\s+place)"
 )
 WITH_DONE = re.compile(
-    rf"(?:(?<=^)|(?<=[.;!?]\s))(?P<lead>with|whenever)\s+(?P<np>(?:the|your|that|this)\s+[a-z]+"
+    rf"(?:(?<=^)|(?<=[.;!?]\s))(?P<lead>with|whenever|once|when|after)\s+(?P<np>(?:the|your|that|this)\s+[a-z]+"
     r"(?:\s+(?!(?:is|are|has|have|gets?)\b)[a-z]+)?)\s+"
     rf"(?:(?P<verb>is|are|has\s+been|have\s+been|gets|get)\s+)?(?P<done>{_FINISHED})\s*,\s*",
     re.I,

@@ -499,6 +499,9 @@ def one_last_step(markers: list[tuple[str, str]]) -> list[tuple[str, str]]:
     return markers
 
 
+_DONE = frozenset({"done", "finished", "complete", "completed"})
+
+
 def finished_thing(text: str) -> str:
     """ "With the bat done, Y" / "Whenever the vase is sorted, Y" -> "Once the bat is done, Y" ("whenever"
     with no state is a freedom, `word_tables.WHENEVER`; "with the bat" alone is no reference)."""
@@ -506,6 +509,8 @@ def finished_thing(text: str) -> str:
     def once(m: re.Match[str]) -> str:
         if m["lead"].lower() == "with" and m["verb"]:  # "with the mug is done": not the absolute form
             return m[0]
+        if m["lead"].lower() in ("once", "when", "after") and (not m["verb"] or m["done"].lower() in _DONE):
+            return m[0]  # "Once the mug is done, Y" is read as it is; "Once the table is sorted, Y" is that
         plural = (m["verb"] or "").lower() in {"are", "have been", "get"}
         return f"{'O' if m['lead'][0].isupper() else 'o'}nce {m['np']} {'are' if plural else 'is'} done, "
 

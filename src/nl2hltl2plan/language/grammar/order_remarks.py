@@ -158,13 +158,18 @@ def remarks_said_plainly(text: str) -> str:
     'Put A on B. the spray bottle first; '
     """
     text = _LAST_CLAUSE_ELSE.sub(lambda m: ". " if m["verb"].lower() in G.VERBS else m[0], text)
+    text = _DONE_THE_REST.sub(r". That last\g<end>", text)
+    text = _SENTENCE.sub(lambda m: _remark_opens(m[0]), text)
     spans = [(m, _read(m[0].rstrip(".;!? "), text[: m.start()])) for m in _SENTENCE.finditer(text)]
     ends = any(r is not None and any(k in ("first", "last") for (k, _, _), _ in r) for _, r in spans)
-    out = []
+    out: list[str] = []
     for m, read in spans:
         head, said = "", m[0]
         if read is None and (tail := _tail_remark(said)) is not None:  # "A and B, the latter first."
             head, said, read = tail
+        after_clause = out and out[-1].rstrip().endswith(";") and _read(out[-1].rstrip(" ;")) is None
+        if read is not None and after_clause:  # "Heat an egg; that one comes first.": a remark of its own
+            out[-1] = out[-1].rstrip()[:-1] + ". "
         if read is not None and (ends or any(k != "rest" for (k, _, _), _ in read)):
             body = said.rstrip(".;!? ")
             lead, end = body[: len(body) - len(body.lstrip())], said[len(body) :]
@@ -195,3 +200,33 @@ def _plain(kind: str, a: str, part: str) -> str:
     if kind in ("first", "last"):
         return f"{a} {kind}"
     return "" if kind == "rest" else part
+
+
+# "Heat an apple and put it in the fridge when you've done the rest.": that sentence's task after every other
+_DONE_THE_REST = re.compile(
+    r",?\s+(?:when|once|after)\s+you(?:'ve|\s+have)?\s+(?:done|finished|completed)\s+"
+    r"(?:the\s+rest|(?:everything|anything)\s+else|(?:all\s+)?the\s+others)(?P<end>\s*[.!?](?:\s|$)|\s*$)",
+    re.I,
+)
+# "Save the kettle for last: wash it and set it on the stove.": a first / last remark that opens its task
+_OPENING_REMARK = re.compile(r"^(?P<lead>\s*)(?P<remark>[^:]+?)\s*:\s+(?P<clause>[^:]+?)(?P<end>[.!?]*\s*)$")
+_ITS_THING = re.compile(
+    r"^(?P<verb>[a-z]+)\s+(?:(?P<it>it|them)\b|(?P<part>(?:a|one)\s+(?:slice|piece))\b(?!\s+of))", re.I
+)
+
+
+def _remark_opens(sentence: str) -> str:
+    """ "Save the bread for last: chill a slice and ..." -> "chill a slice of the bread and .... the bread
+    last.": the clause, its "it" or "a slice" said of the remark's thing, then the remark; any other
+    sentence unchanged."""
+    m = _OPENING_REMARK.match(sentence)
+    read = _read(m["remark"]) if m else None
+    if m is None or read is None or len(read) != 1 or read[0][0][0] not in ("first", "last"):
+        return sentence
+    (kind, thing, _), _said = read[0]
+    def of_thing(t: re.Match[str]) -> str:
+        return f"{t['verb']} {thing}" if t["it"] else f"{t['verb']} {t['part']} of {thing}"
+
+    named = _ITS_THING.sub(of_thing, m["clause"], count=1)
+    return f"{m['lead']}{named}. {thing} {kind}{m['end'] or '.'}"
+

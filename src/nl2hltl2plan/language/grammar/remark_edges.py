@@ -19,7 +19,8 @@ REMARK = "remark_"  # the kinds `sentences.read_sentences` gives the relations o
 _SKIP = frozenset({"the", "a", "an", "please", "do", "all"})
 _TASK_NOUNS = frozenset({"one", "job", "task", "thing", "bit", "stuff", "part"})
 _PLURAL_NOUNS = frozenset({"ones", "jobs", "tasks", "things", "bits", "parts"})
-_THAT = frozenset({"that", "this", "it"})
+_ONE = frozenset({"one", "job", "task"})  # a singular task noun: "the table one" names one task
+_THAT = frozenset({"that", "this", "it", "those", "these"})  # "do those first": the sentence before
 _COUNTS = {"two": 2, "three": 3, "2": 2, "3": 3}
 _TREATED = {"clean": "clean_place", "heat": "heat_place", "cool": "cool_place"}  # a treatment verb's task
 
@@ -70,7 +71,8 @@ def _said_first_or_last(rel: RelationSentence, tasks: Tasks, b: TaskBuilder, edg
     ta, _ = ref_targets(rel.a, tasks.specs, tasks.nps)
     fit, many = _fitting(rel.a, tasks, rel.sentence) or ([], False)
     by_thing = [i for i in fit if _moves(rel.a, tasks.specs[i])]  # a lamp or place one: the rules' reading
-    if ta and len(by_thing) > 1 and not many:  # the words fit more than the one task the rules took
+    one = not many and bool(_ONE.intersection(rel.a.lower().split()))  # "the table one": one task is meant
+    if ta and not many and (len(by_thing) > 1 or (one and len(ta) > 1)):  # the words fit more than one task
         b.unparsed.append(f"{rel.a} {rel.kind} ({NOT_CERTAIN}: more than one task fits)")
         return True
     if ta or len(fit) != 1:

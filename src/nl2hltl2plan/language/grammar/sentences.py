@@ -94,7 +94,11 @@ def read_sentences(text: str) -> Sentences:
     out = Sentences()
     for index, (sentence, start) in enumerate(split_sentences(text)):
         markers, body = strip_leading(sentence)
-        rel = first_last_sentence(sentence) or relation_sentence(body)
+        # with its index: "That one first." names the task of the sentence before
+        if (one := first_last_sentence(sentence)) is not None:
+            out.relations.append(RelationSentence(one.kind, one.a, one.b, index))
+            continue
+        rel = relation_sentence(body)
         if rel is not None:
             out.relations.append(rel)
             continue

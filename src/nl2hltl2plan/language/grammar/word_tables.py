@@ -466,7 +466,9 @@ LEADING: list[tuple[re.Pattern[str], str]] = [
     (re.compile(r"^(?:begin|start)\s+(?:by|with)\s+", _F), FIRST),
     (
         re.compile(
-            r"^(?:in\s+any\s+order|at\s+any\s+time|any\s*time|at\s+whatever\s+time|simultaneously|meanwhile|"
+            # "Any time you like, heat a slice": that task free
+            r"^(?:in\s+any\s+order|(?:at\s+any\s+time|any\s*time)(?:\s+(?:you\s+(?:like|want|wish)|that\s+suits(?:\s+you)?))?|"
+            r"at\s+whatever\s+time|simultaneously|meanwhile|"
             r"in\s+the\s+meantime|in\s+no\s+(?:particular|specific|set)\s+order|in\s+whatever\s+order|"
             rf"at\s+the\s+same\s+time|in\s+parallel|independently|concurrently|{WHENEVER})\b\s*[,:]?\s*",
             _F,
