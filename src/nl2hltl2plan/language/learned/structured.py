@@ -101,10 +101,10 @@ def against_the_words(
 ) -> bool:
     """Whether the model's reading contradicts what the grammar read from the words: it does not keep the
     order words (`order_not_held`), it leaves out a thing the grammar's reading of the same task has
-    (`_leaves_out_a_thing`), it puts a thing where its treatment is done that the grammar's same treatment
-    takes elsewhere (`_treated_where_it_goes`), or it heats, cools or washes a thing where no word says so and the
-    grammar does not ("The mug is in the sink, put it in the microwave" as a washing; check 1 takes the
-    sink for the washing's appliance)."""
+    (`_leaves_out_a_thing`), it puts a thing where its treatment is done that the grammar's same
+    treatment takes elsewhere (`_treated_where_it_goes`), or it heats, cools or washes a thing where no word
+    says so and the grammar does not ("The mug is in the sink, put it in the microwave" as a washing; check
+    1 takes the sink for the washing's appliance)."""
     if order_not_held(instruction, model, grammar) or _leaves_out_a_thing(model[0], grammar[0]):
         return True
     if _treated_where_it_goes(model[0], grammar[0]):
@@ -206,8 +206,9 @@ def _leaves_out_a_thing(model: list[BaseTaskSpec], grammar: list[BaseTaskSpec]) 
 
 def _treated_where_it_goes(model: list[BaseTaskSpec], grammar: list[BaseTaskSpec]) -> bool:
     """Whether the model's reading puts a thing in the place its treatment is done at ("rinse the cloth in
-    the sink and then put the cloth in the cabinet": a washing into the SinkBasin) where the grammar's reading
-    of the same treatment of the thing takes it elsewhere: the sink is where it is washed, not where it ends."""
+    the sink and then put the cloth in the cabinet": a washing into the SinkBasin) where the grammar's
+    reading of the same treatment of the thing takes it elsewhere: the sink is where it is washed, not where
+    it ends."""
     return any(
         m.kind in IMPLIED_TYPES
         and set(m.receptacle or []) <= IMPLIED_TYPES[m.kind]
