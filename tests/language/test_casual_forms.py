@@ -41,6 +41,16 @@ def test_casual_forms_are_read(text, tasks, before):
     assert read(text) == (tasks, before, [])
 
 
+def test_there_after_a_thing_of_one_word_keeps_its_preposition_once():
+    # "put an egg in there": the thing's name takes no preposition (it was "put an egg in in the fridge")
+    assert everyday("put the bread in the fridge, then put an egg in there") == (
+        "put the bread in the fridge, then put an egg in the fridge"
+    )
+    assert everyday("put the bread on the table and then the red apple on there") == (
+        "put the bread on the table and then the red apple on the table"
+    )
+
+
 def test_there_with_nothing_before_it_or_after_a_negation_stays():
     assert everyday("put the egg there") == "put the egg there"
     negated = "put the bread on the counter but don't put the knife there"

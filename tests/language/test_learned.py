@@ -10,7 +10,7 @@ from nl2hltl2plan.errors import DataError, WorldError
 from nl2hltl2plan.language.learned import parse_instruction
 from nl2hltl2plan.language.learned.data import excluded_trials, load_examples
 from nl2hltl2plan.language.learned.inference import load_model
-from nl2hltl2plan.language.learned.ranker import RankCase, TypeRanker
+from nl2hltl2plan.language.learned.ranker import RankCase, TypeRanker, size_said
 from nl2hltl2plan.language.learned.slot_model import SlotModel
 from nl2hltl2plan.suites.alfred.rank_check import top_share
 
@@ -116,6 +116,23 @@ def test_the_type_ranker_learns_a_cue_from_the_rest_of_the_clause() -> None:
     assert ranker.order("move a knife to the counter", cands)[0][0] == "ButterKnife"
     assert ranker.order("anything", [("Knife", 1.0)]) == [("Knife", 1.0)]
     assert top_share(cases, ranker) == len(cases) and top_share(cases, None) == len(cases) // 2
+
+
+def test_a_size_word_before_the_name_ranks_the_types_it_means() -> None:
+    # size_words.txt: "little" / "small" mean the SideTable, "big" the DiningTable, whatever the ranker
+    # learned from the clause; a size word of another thing ("the small apple") leaves the ranker's order
+    room = {"Apple", "Tomato", "DiningTable", "SideTable", "CounterTop", "SinkBasin"}
+    for text, first in [
+        ("wash a tomato and put it on the little table", "SideTable"),
+        ("put the apple on the big table", "DiningTable"),
+        ("put the apple on the small wooden table", "SideTable"),
+    ]:
+        (amb,) = parse_instruction(text, room, "test").ambiguities
+        assert amb.candidates[0] == first, text
+        assert amb.confidence == sorted(amb.confidence, reverse=True)
+    ranked = [("DiningTable", 0.6), ("SideTable", 0.4)]
+    assert size_said("put the little apple by the table", ranked) == ranked  # "little" is the apple's
+    assert size_said("put it on the little table", ranked) == [("SideTable", 0.6), ("DiningTable", 0.4)]
 
 
 def test_a_task_stated_in_a_reference_gets_its_unknown_destination_from_the_model() -> None:

@@ -206,3 +206,32 @@ def test_a_sure_model_may_not_override_what_the_words_say() -> None:
     assert decide(([placed], [], True), ([washed], [], 0.99), rule, text) == "grammar"
     text = "Rinse the mug and put it in the microwave."
     assert decide(([placed], [], True), ([washed], [], 0.99), rule, text) == "model"
+
+
+def test_a_sure_model_may_not_put_a_thing_where_it_is_washed_against_the_grammar() -> None:
+    """ "rinse the cloth in the sink and then put the cloth in the cabinet": the model's washing into the
+    sink and placing in the cabinet (one cloth in two places) does not override the grammar's washing into
+    the cabinet; near miss: the grammar too reads the washing into the sink."""
+    from nl2hltl2plan.language.learned.structured import StructurePolicy, decide
+
+    rule = StructurePolicy(rescue=0.5, override=0.9, doubt=0.3)
+    washed = BaseTaskSpec(id="A", text="", kind="clean_place", object=["Cloth"], receptacle=["SinkBasin"])
+    placed = BaseTaskSpec(id="B", text="", kind="place", object=["Cloth"], receptacle=["Cabinet"])
+    kept = washed.model_copy(update={"receptacle": ["Cabinet"]})
+    text = "rinse the cloth in the sink and then put the cloth in the cabinet"
+    assert decide(([kept], [], True), ([washed, placed], [("A", "B")], 0.99), rule, text) == "grammar"
+    assert decide(([washed], [], True), ([washed, placed], [("A", "B")], 0.99), rule, text) == "model"
+    room = {"Cloth", "SinkBasin", "Sink", "Cabinet", "Toilet"}
+    r = parse_instruction(text, room, "bathroom")
+    assert [t.summary() for t in r.tasks] == ["clean_place Cloth -> Cabinet"] and not r.unparsed
+
+
+def test_a_span_read_alone_does_not_ground_a_noun_otherwise_than_the_whole_sentence() -> None:
+    """ "the towel ... then the hand towel": the whole sentence reads the Towel; its span read alone would
+    take ALFRED's HandTowel, so the model's reading does not stand and the whole's refusal (no holder for
+    the Towel here) is kept; the second span, the same types in both, reads as it is."""
+    room = {"Towel", "HandTowel", "HandTowelHolder", "Toilet", "SinkBasin", "Cabinet"}
+    text = "so put the towel on the towel holder and then the hand towel on the hand towel holder"
+    r = parse_instruction(text, room, "FloorPlan420", strict=False)
+    assert [t.object for t in r.tasks] == [["Towel"], ["HandTowel"]]
+    assert r.unparsed == ["nothing named 'the towel holder' here can hold the Towel"]

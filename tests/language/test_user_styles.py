@@ -346,13 +346,6 @@ KNOWN_WRONG: set[str] = {
     "Microwave the potato, then drop the tomato in the sink.",
     "Chill the lettuce and put it in the sink, and the tomato too, but on the counter.",
     "First heat the potato, and then put it in the fridge. Chill the apple and put it in the microwave.",
-    # read wrong since session 31's retrained models (not wrong at the session's start): the re-read of a
-    # refused reading takes the slot model's type ("the towel" -> HandTowel), and the type ranker now puts
-    # DiningTable before SideTable for "the little table"; left for the next round
-    "so put the towel on the towel holder and then the hand towel on the hand towel holder",
-    "robot can u make a mug cold and put it in the coffee machine and wash a tomato and put it on the little "
-    "table and put a apple slice in a pot and put the pot in the fridge and wash a apple and put it on the "
-    "little table too",
 }
 
 

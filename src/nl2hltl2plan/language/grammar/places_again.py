@@ -25,10 +25,12 @@ def places_named_again(text: str) -> str:
 # or refused as it is. "on it too" / "in it as well" is the same place ("put the book on the bed. put the
 # pillow on it too", "two remotes on the couch and two cards on it too"); a bare "on it" may be a thing
 # just named ("put a fork in a cup and ... put the cup in it"), and is left
+# a word of the thing's name is no preposition: "put an egg in there" is the egg, not "an egg in", in there
+_NAME_WORD = r"\s+(?!(?:over|in|into|inside|on|onto)\b)[a-z]+"
 _THERE = re.compile(
     r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move|throw|toss|carry|take|bring)\s+"
-    r"(?:it|them|(?:the|a|an|two|both|\d)\s+[a-z]+(?:\s+(?!over\b)[a-z]+)?)"
-    r"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|three|both|\d)\s+[a-z]+(?:\s+(?!over\b)[a-z]+){0,2}?)"
+    rf"(?:it|them|(?:the|a|an|two|both|\d)\s+[a-z]+(?:{_NAME_WORD})?)"
+    rf"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|three|both|\d)\s+[a-z]+(?:{_NAME_WORD}){{0,2}}?)"
     r"(?P<source>\s+from\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)??"  # "the bottle from the toilet there"
     # "and a spoon in the bowl on there as well": the container, on the last place (users_h195dev)
     r"(?P<inner>\s+(?:in|into|inside)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?(?=\s+(?:on|onto)\s+there\b))?"

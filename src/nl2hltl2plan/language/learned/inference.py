@@ -380,6 +380,8 @@ def _arbitrated(
     rule = ctx.policy.structure
     assert rule is not None
     s = structure_reading(instruction, ctx, structure)
+    if s is not None and _grounds_otherwise(s[0], g, ctx.scene_types):
+        s = None
     complete = grammar_complete(g)
     model = (s[0].tasks, s[0].before, s[1]) if s else None
     uncertain = any(NOT_CERTAIN in u or ORDER_LEFT_OPEN in u for u in g.unparsed)  # words leave it open
@@ -395,6 +397,23 @@ def _arbitrated(
         )
         return g.model_copy(update={"tasks": [], "before": [], "groups": [], "unparsed": [why]})
     return g
+
+
+def _grounds_otherwise(s: LearnedParse, g: LearnedParse, types: set[str] | None) -> bool:
+    """Whether a structure-model task grounds a slot that the whole instruction's reading grounded (a scene
+    type, in the same clause) to another type: a span read alone loses what the rest of the sentence says of
+    a noun ("the towel ... then the hand towel": Towel, not ALFRED's HandTowel), so such a re-read does not
+    stand against the whole reading and its verdict; the span only fills what the whole left open."""
+    said = {t.text.strip().lower(): t for t in g.tasks}
+    for t in s.tasks:
+        whole = said.get(t.text.strip().lower())
+        if whole is None or whole.kind != t.kind:
+            continue
+        for role in slots_of(t.kind):
+            grounded = set(_in_scene(getattr(whole, role), types))
+            if grounded and not set(getattr(t, role) or []) <= grounded:
+                return True
+    return False
 
 
 def grammar_complete(g: LearnedParse) -> bool:

@@ -16,7 +16,8 @@ that does not read completely makes the whole reading incomplete.
   said that names no certain task: `grammar.references.said_before`);
 - both are complete and they disagree -> the grammar's where the model's reverses or drops an order the
   grammar read, does not keep what the order words say (`order_words_kept`), leaves out a thing the
-  grammar's reading of the same task has ("put a pen in it": the mug), or adds a heating, cooling or
+  grammar's reading of the same task has ("put a pen in it": the mug), puts a thing in the sink it is washed
+  in where the grammar's washing takes it elsewhere, or adds a heating, cooling or
   washing that no word names (`against_the_words`); else the structure model's when it is at least
   `override` sure (`override_pointing` when its reading has a span that points back at an earlier one);
   when it is less sure than `doubt`, neither is trusted: no tasks, the disagreement goes to `unparsed`; in
@@ -100,10 +101,13 @@ def against_the_words(
 ) -> bool:
     """Whether the model's reading contradicts what the grammar read from the words: it does not keep the
     order words (`order_not_held`), it leaves out a thing the grammar's reading of the same task has
-    (`_leaves_out_a_thing`), or it heats, cools or washes a thing where no word says so and the
-    grammar does not ("The mug is in the sink, put it in the microwave" as a washing; check 1 takes the
-    sink for the washing's appliance)."""
+    (`_leaves_out_a_thing`), it puts a thing where its treatment is done that the grammar's same
+    treatment takes elsewhere (`_treated_where_it_goes`), or it heats, cools or washes a thing where no word
+    says so and the grammar does not ("The mug is in the sink, put it in the microwave" as a washing; check
+    1 takes the sink for the washing's appliance)."""
     if order_not_held(instruction, model, grammar) or _leaves_out_a_thing(model[0], grammar[0]):
+        return True
+    if _treated_where_it_goes(model[0], grammar[0]):
         return True
     said = {c for w, _, _ in tokens(instruction) for c in categories(w)}
     # an appliance counts where it is a place the thing goes, not where something already is
@@ -198,6 +202,22 @@ def _leaves_out_a_thing(model: list[BaseTaskSpec], grammar: list[BaseTaskSpec]) 
     object, and fewer of the things the grammar's names ("put a red pen in it and move it to the desk" read
     without the mug it is put in: a pronoun is no content word, so check 1 does not miss it)."""
     return any(m.object == g.object and _things(m) < _things(g) for m in model for g in grammar)
+
+
+def _treated_where_it_goes(model: list[BaseTaskSpec], grammar: list[BaseTaskSpec]) -> bool:
+    """Whether the model's reading puts a thing in the place its treatment is done at ("rinse the cloth in
+    the sink and then put the cloth in the cabinet": a washing into the SinkBasin) where the grammar's
+    reading of the same treatment of the thing takes it elsewhere: the sink is where it is washed, not where
+    it ends."""
+    return any(
+        m.kind in IMPLIED_TYPES
+        and set(m.receptacle or []) <= IMPLIED_TYPES[m.kind]
+        and g.kind == m.kind
+        and g.object == m.object
+        and not set(g.receptacle or []) <= IMPLIED_TYPES[g.kind]
+        for m in model
+        for g in grammar
+    )
 
 
 def _things(task: BaseTaskSpec) -> set[str]:
