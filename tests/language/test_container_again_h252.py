@@ -69,6 +69,18 @@ def test_the_shapes_read_one_task(kitchen, text, task):
 
 
 @pytest.mark.data
+def test_a_pair_after_other_things_keeps_its_container(kitchen):
+    """The verb carried over to a second pair, and a verbless list whose container has a colour."""
+    text = "put a spoon in a wine glass and the glass on the counter, and a fork in a bowl and the bowl in the fridge"
+    assert reading(text, kitchen)[0] == [
+        "place_in_container Spoon in Cup -> CounterTop",
+        "place_in_container Fork in Bowl -> Fridge",
+    ]
+    text = "A tomato onto the table, and a fork in the wooden bowl with the bowl on the counter."
+    assert reading(text, kitchen)[0][-1] == "place_in_container Fork in Bowl -> CounterTop"
+
+
+@pytest.mark.data
 def test_another_container_is_not_the_first_one(kitchen):
     assert outcome("Put a spoon in a bowl and put another bowl in the sink.", kitchen) != [
         "place_in_container Spoon in Bowl -> SinkBasin"

@@ -182,29 +182,43 @@ _CONTAINER_AGAIN = re.compile(
 def container_again(text: str) -> str:
     """ "put X in a C and the C on Y" -> "put X in a C and put the C on Y", where C names a movable container
     both times ("a spoon in the grey bowl, and the bowl goes in the sink"; not "in the fridge and the pan
-    ...", nor "in a bowl and another bowl ...")."""
-
-    def one(m: re.Match[str]) -> str:
-        held = find_mentions(m["head"])
-        again = find_mentions(m["c2"])
+    ...", nor "in a bowl and another bowl ..."). An item whose verb is carried over from before ("..., and a
+    fork in a bowl and the bowl in the fridge") gets its "put" too: the rules read a carried verb's item
+    and a verb's clause after it as a list of the earlier clause's things."""
+    out, pos = [], 0
+    for m in _CONTAINER_AGAIN.finditer(text):
+        held, again = find_mentions(m["head"]), find_mentions(m["c2"])
+        # the container's name ends the head ("in a glass and put the glass" is done) and is said again
         if not held or not again or held[-1].plural or again[-1].plural or held[-1].char_end != len(m["head"]):
-            return m[0]  # the container's name ends the head: "in a glass and put the glass" is done
+            continue
         if held[-1].entry.canonical not in MOVABLE_RECEPTACLES or again[-1].entry.canonical != held[-1].entry.canonical:
-            return m[0]
-        if not _places_before(text[: m.start()]):
-            return m[0]  # "X goes in the C, and the C goes on Y", "X in a C, C in Y": read as they are
-        return f"{m['head']} and put the {m['c2']} "
+            continue
+        if m.start() < pos or not _places_before(text[: m.start()]):
+            continue  # "X goes in the C, and the C goes on Y", "X in a C, C in Y": read as they are
+        item = max((c.end() for c in _ITEM_START.finditer(text, 0, m.start())), default=0)
+        words = re.findall(r"[a-z']+", text[item : m.start()].lower())
+        carried = bool(words) and words[0] not in G.VERBS and not _places(text[item : m.start()])
+        out.append(text[pos:item] + ("put " if carried else "") + text[item : m.start()])
+        out.append(f"{m['head']} and put the {m['c2']} ")
+        pos = m.end()
+    return "".join(out) + text[pos:]
 
-    return _CONTAINER_AGAIN.sub(one, text)
+
+# where a list's item starts: after a stop or comma and the words that join it ("..., and also a fork")
+_ITEM_START = re.compile(r"(?:^|[.;:!?,])\s*(?:(?:and|then|also|plus)\s+)*", re.I)
+
+
+def _places(clause: str) -> bool:
+    return any(G.VERBS.get(w, ("",))[0] == "place" for w in re.findall(r"[a-z']+", clause.lower()))
 
 
 def _places_before(text: str) -> bool:
-    """Does the clause that `text` ends with have a placing verb ("cut a potato and put a slice ")? Not of a
+    """Does the sentence that `text` ends with place something before ("cut a potato and put a slice ", "put
+    a spoon in a glass and the glass on the counter, and an apple slice ": the verb carried over)? Not a
     second thing ("put another slice in a pan and the pan ..."), which the drafts keep apart from the first."""
-    clause = re.split(r"[.;:!?,]", text)[-1]
-    if re.search(r"\b(?:another|other)\b", clause, re.I):
+    if re.search(r"\b(?:another|other)\b", re.split(r"[.;:!?,]", text)[-1], re.I):
         return False
-    return any(G.VERBS.get(w, ("",))[0] == "place" for w in re.findall(r"[a-z']+", clause.lower()))
+    return _places(re.split(r"[.;:!?]", text)[-1])
 
 
 # "a spoon in a glass goes on the table": a thing said in a movable container named for the first time ("a
