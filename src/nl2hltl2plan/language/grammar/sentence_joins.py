@@ -189,9 +189,10 @@ def container_again(text: str) -> str:
     for m in _CONTAINER_AGAIN.finditer(text):
         held, again = find_mentions(m["head"]), find_mentions(m["c2"])
         # the container's name ends the head ("in a glass and put the glass" is done) and is said again
-        if not held or not again or held[-1].plural or again[-1].plural or held[-1].char_end != len(m["head"]):
+        if not held or not again or held[-1].plural or again[-1].plural or held[-1].char_end < len(m["head"]):
             continue
-        if held[-1].entry.canonical not in MOVABLE_RECEPTACLES or again[-1].entry.canonical != held[-1].entry.canonical:
+        kind = held[-1].entry.canonical
+        if kind not in MOVABLE_RECEPTACLES or again[-1].entry.canonical != kind:
             continue
         if m.start() < pos or not _places_before(text[: m.start()]):
             continue  # "X goes in the C, and the C goes on Y", "X in a C, C in Y": read as they are
@@ -215,15 +216,17 @@ def _places(clause: str) -> bool:
 def _places_before(text: str) -> bool:
     """Does the sentence that `text` ends with place something before ("cut a potato and put a slice ", "put
     a spoon in a glass and the glass on the counter, and an apple slice ": the verb carried over)? Not a
-    second thing ("put another slice in a pan and the pan ..."), which the drafts keep apart from the first."""
+    second thing ("put another slice in a pan and the pan ..."), which the drafts keep apart from the
+    first."""
     if re.search(r"\b(?:another|other)\b", re.split(r"[.;:!?,]", text)[-1], re.I):
         return False
     return _places(re.split(r"[.;:!?]", text)[-1])
 
 
 # "a spoon in a glass goes on the table": a thing said in a movable container named for the first time ("a
-# glass") as the subject of a verb of going is the container's content, the container moved there; "the spoon in
-# the bowl goes ..." (a container named definitely) says where the spoon is now, a source (`subject_sources`)
+# glass") as the subject of a verb of going is the container's content, the container moved there; "the spoon
+# in the bowl goes ..." (a container named definitely) says where the spoon is now, a source
+# (`subject_sources`)
 _CONTENT_GOES = re.compile(
     r"(?P<x>\b(?:a|an|one|the|your|my)\s+(?:[a-z]+\s+){0,2}?)(?P<p>in|inside|on)\s+(?P<c>(?:a|an|one)\s+"
     r"(?:[a-z]+\s+){0,2}?[a-z]+)\s+(?:goes|go|(?:should|must|can|needs?\s+to)\s+go|(?:is|are)\s+to\s+go)\s+"
@@ -240,7 +243,8 @@ def content_goes(text: str) -> str:
         holder, thing = find_mentions(m["c"]), find_mentions(m["x"])
         if not holder or not thing or holder[-1].char_end != len(m["c"]) or holder[-1].plural:
             return m[0]
-        if holder[-1].entry.canonical not in MOVABLE_RECEPTACLES or thing[-1].entry.canonical in MOVABLE_RECEPTACLES:
+        movable = holder[-1].entry.canonical in MOVABLE_RECEPTACLES
+        if not movable or thing[-1].entry.canonical in MOVABLE_RECEPTACLES:
             return m[0]
         return f"put {m['x']}{m['p']} {m['c']} and put the {holder[-1].surface} "
 
