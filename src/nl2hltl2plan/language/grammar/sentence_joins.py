@@ -167,13 +167,13 @@ def _held_at_end(sentence: str) -> str | None:
 # (users_h195dev; with "a slice" the verbless second clause found no object); read again after
 # `sentences.supply_put` wrote "the keys go in the box, and the box goes on the sofa" as a placing (h212).
 # Any shape of it (h252): the container with words before its name ("the grey bowl"), said after "on" ("on
-# a plate"), joined by a comma, ";" or
-# "then", and the container said again by "that", "this" or "your", with or without its own verb ("the bowl
-# goes in the sink", "the pan put in the fridge"); `container_again` checks that both name one movable type
+# a plate"), joined by a comma, ";" or "then", and the container said again by "that", "this" or "your",
+# with or without its own verb ("the bowl goes in the sink", "the pan put in the fridge"); `container_again`
+# checks that both name one movable type
 _CONTAINER_AGAIN = re.compile(
     r"(?P<head>\b(?:in|into|inside|on|onto)\s+(?:a|an|the|one|your|my)\s+(?:[a-z]+\s+){0,2}?(?P<c>[a-z]+))"
     r"\s*(?:,|;)?\s+(?:and\s+)?(?:then\s+)?(?:the|that|this|your)\s+(?P<c2>[a-z]+)\s+"
-    r"(?P<v2>(?:goes|go|(?:should|must|can)\s+go|(?:is|are)\s+to\s+go)\s+"
+    r"(?:(?:goes|go|(?:should|must|can)\s+go|(?:is|are)\s+to\s+go)\s+"
     r"|(?:(?:should|must)\s+be\s+|is\s+to\s+be\s+)?(?:put|placed|set|left|stored)\s+)?(?=(?:in|into|on|onto|inside)\s)",
     re.I,
 )
