@@ -165,17 +165,90 @@ def _held_at_end(sentence: str) -> str | None:
 
 # "put a slice in a bowl and the bowl in the fridge": the container said again with its place is put there
 # (users_h195dev; with "a slice" the verbless second clause found no object); read again after
-# `sentences.supply_put` wrote "the keys go in the box, and the box goes on the sofa" as a placing (h212)
+# `sentences.supply_put` wrote "the keys go in the box, and the box goes on the sofa" as a placing (h212).
+# Any shape of it (h252): the container with words before its name ("the grey bowl"), said after "on" ("on
+# a plate"), joined by a comma, ";" or "then", and the container said again by "that", "this" or "your",
+# with or without its own verb ("the bowl goes in the sink", "the pan put in the fridge"); `container_again`
+# checks that both name one movable type
 _CONTAINER_AGAIN = re.compile(
-    r"(?P<head>\b(?:put|place|set|stick|drop)\s+(?:a|an|the|one)\s+(?:[a-z]+\s+){0,2}?(?:in|into|inside)\s+"
-    r"(?:a|an|the)\s+(?P<c>[a-z]+))\s*,?\s+and\s+the\s+(?P=c)\s+(?=(?:in|into|on|onto|inside)\s)",
+    r"(?P<head>\b(?:in|into|inside|on|onto)\s+(?:a|an|the|one|your|my)\s+(?:[a-z]+\s+){0,2}?(?P<c>[a-z]+))"
+    r"\s*(?:,|;)?\s+(?:and\s+)?(?:then\s+)?(?:the|that|this|your)\s+(?P<c2>[a-z]+)\s+"
+    r"(?:(?:goes|go|(?:should|must|can)\s+go|(?:is|are)\s+to\s+go)\s+"
+    r"|(?:(?:should|must)\s+be\s+|is\s+to\s+be\s+)?(?:put|placed|set|left|stored)\s+)?(?=(?:in|into|on|onto|inside)\s)",
     re.I,
 )
 
 
 def container_again(text: str) -> str:
-    """ "put X in a C and the C on Y" -> "put X in a C and put the C on Y"."""
-    return _CONTAINER_AGAIN.sub(r"\g<head> and put the \g<c> ", text)
+    """ "put X in a C and the C on Y" -> "put X in a C and put the C on Y", where C names a movable container
+    both times ("a spoon in the grey bowl, and the bowl goes in the sink"; not "in the fridge and the pan
+    ...", nor "in a bowl and another bowl ..."). An item whose verb is carried over from before ("..., and a
+    fork in a bowl and the bowl in the fridge") gets its "put" too: the rules read a carried verb's item
+    and a verb's clause after it as a list of the earlier clause's things."""
+    out, pos = [], 0
+    for m in _CONTAINER_AGAIN.finditer(text):
+        held, again = find_mentions(m["head"]), find_mentions(m["c2"])
+        # the container's name ends the head ("in a glass and put the glass" is done) and is said again
+        if not held or not again or held[-1].plural or again[-1].plural or held[-1].char_end < len(m["head"]):
+            continue
+        kind = held[-1].entry.canonical
+        if kind not in MOVABLE_RECEPTACLES or again[-1].entry.canonical != kind:
+            continue
+        if m.start() < pos or not _places_before(text[: m.start()]):
+            continue  # "X goes in the C, and the C goes on Y", "X in a C, C in Y": read as they are
+        item = max((c.end() for c in _ITEM_START.finditer(text, 0, m.start())), default=0)
+        words = re.findall(r"[a-z']+", text[item : m.start()].lower())
+        carried = bool(words) and words[0] not in G.VERBS and not _places(text[item : m.start()])
+        out.append(text[pos:item] + ("put " if carried else "") + text[item : m.start()])
+        out.append(f"{m['head']} and put the {m['c2']} ")
+        pos = m.end()
+    return "".join(out) + text[pos:]
+
+
+# where a list's item starts: after a stop or comma and the words that join it ("..., and also a fork")
+_ITEM_START = re.compile(r"(?:^|[.;:!?,])\s*(?:(?:and|then|also|plus)\s+)*", re.I)
+
+
+def _places(clause: str) -> bool:
+    return any(G.VERBS.get(w, ("",))[0] == "place" for w in re.findall(r"[a-z']+", clause.lower()))
+
+
+def _places_before(text: str) -> bool:
+    """Does the sentence that `text` ends with place something before ("cut a potato and put a slice ", "put
+    a spoon in a glass and the glass on the counter, and an apple slice ": the verb carried over)? Not a
+    second thing ("put another slice in a pan and the pan ..."), which the drafts keep apart from the
+    first."""
+    if re.search(r"\b(?:another|other)\b", re.split(r"[.;:!?,]", text)[-1], re.I):
+        return False
+    return _places(re.split(r"[.;:!?]", text)[-1])
+
+
+# "a spoon in a glass goes on the table": a thing said in a movable container named for the first time ("a
+# glass") as the subject of a verb of going is the container's content, the container moved there; "the spoon
+# in the bowl goes ..." (a container named definitely) says where the spoon is now, a source
+# (`subject_sources`)
+_CONTENT_GOES = re.compile(
+    r"(?P<x>\b(?:a|an|one|the|your|my)\s+(?:[a-z]+\s+){0,2}?)(?P<p>in|inside|on)\s+(?P<c>(?:a|an|one)\s+"
+    r"(?:[a-z]+\s+){0,2}?[a-z]+)\s+(?:goes|go|(?:should|must|can|needs?\s+to)\s+go|(?:is|are)\s+to\s+go)\s+"
+    r"(?=(?:in|into|on|onto|inside)\s)",
+    re.I,
+)
+
+
+def content_goes(text: str) -> str:
+    """ "a spoon in a glass goes on the table" -> "put a spoon in a glass and put the glass on the table",
+    where the glass names a movable container and the spoon a thing of another type."""
+
+    def one(m: re.Match[str]) -> str:
+        holder, thing = find_mentions(m["c"]), find_mentions(m["x"])
+        if not holder or not thing or holder[-1].char_end != len(m["c"]) or holder[-1].plural:
+            return m[0]
+        movable = holder[-1].entry.canonical in MOVABLE_RECEPTACLES
+        if not movable or thing[-1].entry.canonical in MOVABLE_RECEPTACLES:
+            return m[0]
+        return f"put {m['x']}{m['p']} {m['c']} and put the {holder[-1].surface} "
+
+    return _CONTENT_GOES.sub(one, text)
 
 
 # "put a knife in a mug and a spatula in another bowl, and set both (of them) on the table": each container

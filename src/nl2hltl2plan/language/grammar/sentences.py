@@ -36,6 +36,7 @@ from nl2hltl2plan.language.grammar.phrases import match_prep, parse_np, tokens
 from nl2hltl2plan.language.grammar.sentence_joins import (
     both_of_two_sentences,
     container_steps,
+    content_goes,
     holder_named,
     joined_treatments,
 )
@@ -511,7 +512,8 @@ def normalize(text: str) -> str:
     text = _THEN_INSIDE.sub(", then ", text)
     text = _DONE_WITH.sub(lambda m: _as_cased("after ", m[1]), text)
     text = closing_orders(subordinate_first(finished_thing(done_opener_closed(opener_closed(text)))))
-    return container_steps(supply_put(re.sub(r"\s+", " ", text).strip()))  # after the verbs are written
+    text = content_goes(re.sub(r"\s+", " ", text).strip())  # "a spoon in a glass goes ...": its container
+    return container_steps(supply_put(text))  # after the verbs are written
 
 
 # The placement verb a terse or conversational request leaves out (issue 24's tabletop styles):

@@ -47,10 +47,11 @@ _UNDER_IT = re.compile(r"\s*,?\s*under\s+it(?:\s+too|\s+as\s+well)?\s*$", re.I)
 _UNDER_IT_SAID = re.compile(r"\s+under\s+it(?P<too>\s+too|\s+as\s+well)?(?=\s*(?:[,.;!?]|$))", re.I)
 _LAMP_NAME = re.compile(r"\b(?:the|a)\s+(?:desk\s+|floor\s+)?(?:lamp|light)\b", re.I)
 # "a fork in a bowl, the bowl on the counter" / "... with the bowl on the counter": one task, the container
-# carried (a verb must open the item after it, which the rules would take into the pair)
+# carried (a verb must open the item after it, which the rules would take into the pair); the container may
+# have words before its name ("a pen in the black mug with the mug on the dresser": h252)
 _PAIR = re.compile(
-    r"^(?P<x>.+?)\s+(?:in|into|on|onto|inside)\s+(?:a|an|the)\s+(?P<c>[a-z]+)\s*(?:,|\s+with|\s+and)\s+"
-    r"(?:the|that)\s+(?P=c)\s+(?:in|into|on|onto|inside)\s",
+    r"^(?P<x>.+?)\s+(?:in|into|on|onto|inside)\s+(?:a|an|the|your)\s+(?:[a-z]+\s+){0,2}?(?P<c>[a-z]+)\s*"
+    r"(?:,|\s+with|\s+and)\s+(?:the|that|your)\s+(?P=c)\s+(?:in|into|on|onto|inside)\s",
     re.I,
 )
 _WITH_CONTAINER = re.compile(  # (", with the mug on the desk": h212; "with the mug still on the desk")
