@@ -113,10 +113,22 @@ def _only_names(body: str, end: int) -> bool:
     listed = all(
         # a source said of a name is where it is: "the book from the bed" (`landmarks.subject_sources`)
         w in _LIST_WORDS or (k and w in _STATES | {"from"}) or any(a <= s < b for a, b in named)
+        or _slice_word(words, k)
         for k, (w, s) in enumerate(words)
     )
-    head = body[:end].rstrip().rstrip(",")  # "one washed cloth, in the tub"
+    head = _SLICE_END.sub("", body[:end].rstrip().rstrip(","))  # "one washed cloth, in the tub"
     return bool(words) and listed and names_object_before(head, len(head))
+
+
+# a slice of a named thing ("a warm apple slice", "a cold slice of the bread", h231): the slice is the item
+_SLICE_END = re.compile(r"\s+(?:slice|piece)s?$", re.I)
+
+
+def _slice_word(words: list[tuple[str, int, int]], k: int) -> bool:
+    """Is the k-th word a slice noun after another word ("apple slice", "a slice"), or the "of" of "slice of"
+    ("the" is a list word already)?"""
+    w = words[k][0]
+    return bool(k) and (w in G.SLICE_NOUNS or (w == "of" and words[k - 1][0] in G.SLICE_NOUNS))
 
 
 # a container and what it holds, then its place: "the pot with the knife in it on the table" (h238)
