@@ -124,7 +124,7 @@ def _only_names(body: str, end: int) -> bool:
 _SLICE_END = re.compile(r"\s+(?:slice|piece)s?$", re.I)
 
 
-def _slice_word(words: list[tuple[str, int, int]], k: int) -> bool:
+def _slice_word(words: list[tuple[str, int]], k: int) -> bool:
     """Is the k-th word a slice noun after another word ("apple slice", "a slice"), or the "of" of "slice of"
     ("the" is a list word already)?"""
     w = words[k][0]
