@@ -65,6 +65,9 @@ def kitchen():
          "of the tomato goes on the counter.",
          ["heat_place Apple(sliced) -> Fridge", "cool_place Tomato(sliced) -> CounterTop"]),
         ("The tomato wants chilling and then goes in the microwave.", ["cool_place Tomato -> Microwave"]),
+        # "toast" names bread too: a verb and its slice, no verbless list of two things (paper_h178)
+        ("Whenever you want, toast a slice of bread in the microwave and put it on the counter.",
+         ["heat_place Bread(sliced) -> CounterTop"]),
     ],
 )  # fmt: skip
 def test_read_in_a_kitchen(kitchen, text, read):
