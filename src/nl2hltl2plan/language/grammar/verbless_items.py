@@ -125,13 +125,15 @@ _SLICE_END = re.compile(r"\s+(?:slice|piece)s?$", re.I)
 
 
 def _slice_word(words: list[tuple[str, int]], k: int, named: list[tuple[int, int]]) -> bool:
-    """Is the k-th word a slice noun right after its name ("apple slice") or before any name ("a slice"), or
-    the "of" of "slice of"? ("toast a slice of bread" is a verb and its thing: "toast" names bread too.)"""
+    """Is the k-th word a slice noun right after its name ("apple slice") or before any name of its list item
+    ("a slice"), or the "of" of "slice of"? ("toast a slice of bread" is a verb and its thing: "toast" names
+    bread too.)"""
     w, at = words[k]
     if not k or not (w in G.SLICE_NOUNS or (w == "of" and words[k - 1][0] in G.SLICE_NOUNS)):
         return False
     slice_at = at if w != "of" else words[k - 1][1]
-    ends = [b for a, b in named if a < slice_at]
+    item_at = max((s for x, s in words if x in {"and", "or", ","} and s < slice_at), default=-1)  # its item's
+    ends = [b for a, b in named if item_at < a < slice_at]
     return not ends or (w != "of" and ends[-1] == words[k - 1][1] + len(words[k - 1][0]) and len(ends) == 1)
 
 
