@@ -522,6 +522,8 @@ def normalize(text: str) -> str:
 # in the plate"; "start with the apple in the plate" -> "first put the apple in the plate".
 _WISH = re.compile(  # also a cleft: "what I'd love is for you to put ..." (h220)
     r"\b(?:what\s+(?:I|we)(?:'d|\s+would)\s+(?:like|love)\s+is\s+for\s+you\s+to\s+|"
+    # a heading that says a list of goals: "What I need: a warm apple slice in the fridge, ..." (h231)
+    r"what\s+(?:I|we)(?:'d|\s+would)?\s+(?:like|love|want|need)\s*:\s*|"
     r"(?:I|we)(?:'d|\s+would|\s+will)?\s+"
     + courtesy_pattern("wish_verb")  # the wish verbs (`courtesy.txt`)
     + r"\s+(?:(?:for\s+)?you\s+to\s+)?)",

@@ -67,8 +67,8 @@ def _patterns() -> tuple[re.Pattern[str], ...]:
         rf"{_LEAD}{_THING}\s+(?:(?:needs?|wants?|could\s+(?:use|do\s+with))\s+"
         rf"(?:(?:a|an)\s+(?:(?:good|quick|proper|little|bit\s+of\s+a)\s+)?(?P<noun>{verbs})"
         rf"|to\s+(?:be|get)\s+(?P<part>{past})|(?P<ger>{verbs}))|{_DUTY}\s+(?P<duty>{past})){_PARTICLE}"
-        rf"(?:\s+and\s+(?P<then>{_PLACED})(?:\s+(?P<adv>away|back|down))?(?=\s+(?:in|into|on|onto|inside)\s))?"
-        r"(?![\w'])",
+        rf"(?:\s+and\s+(?P<then>{_PLACED})(?:\s+(?P<adv>away|back|down))?(?=\s+(?:in|into|on|onto|inside)\s)"
+        rf"|{_GOES})?(?![\w'])",
         re.I,
     )
     causative = re.compile(
@@ -92,6 +92,13 @@ def _patterns() -> tuple[re.Pattern[str], ...]:
     return need, causative, purpose, pair
 
 
+# the place said after a need as where the thing goes next (h231's "the lettuce needs chilling and then on
+# the table", "The loaf of bread wants chilling too, then back on the white table"; "the cup wants chilling
+# and then goes on the table"): "then" or "goes" must be said, so "needs washing and in the sink ..." is left
+_GOES = (
+    r"(?P<goes_to>(?P<too>\s+(?:too|as\s+well|also))?\s*,?\s+(?:(?:and\s+)?then(?:\s+(?:it|they))?(?:\s+(?:goes|go))?"
+    r"|and(?:\s+(?:it|they))?\s+(?:goes|go))(?:\s+(?P<back>back|away))?)(?=\s+(?:in|into|on|onto|inside)\s)"
+)
 # a duty said in the passive ("has to be washed", "should be chilled", a note's "to be rinsed", h223), and the
 # placing said after it in the same voice ("... and put / left / placed on the counter"), of the same thing
 _DUTY = r"(?:(?:has|have|is|are|ought)\s+to\s+(?:be|get)|(?:should|must|will|shall|can)\s+(?:be|get)|to\s+be)"
@@ -226,7 +233,10 @@ def _imperative(m: re.Match[str]) -> str:
     if verb is None or not _names_thing(m["thing"]):
         return m[0]
     thing = re.sub(r"^(?:that|this|my|your)\b", "the", m["thing"], flags=re.I)
-    placed = f" and put it{' ' + forms['adv'] if forms.get('adv') else ''}" if forms.get("then") else ""
+    adv = forms.get("adv") or forms.get("back")
+    placed = f" and put it{' ' + adv if adv else ''}" if forms.get("then") else ""
+    if forms.get("goes_to"):  # "needs chilling (too), then back on the": the place after it
+        placed = f"{forms.get('too') or ''} and put it{' ' + adv if adv else ''}"
     return f"{m['lead']}{verb} {thing}{placed}"
 
 

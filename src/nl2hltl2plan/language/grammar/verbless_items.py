@@ -114,10 +114,28 @@ def _only_names(body: str, end: int) -> bool:
     listed = all(
         # a source said of a name is where it is: "the book from the bed" (`landmarks.subject_sources`)
         w in _LIST_WORDS or (k and w in _STATES | {"from"}) or any(a <= s < b for a, b in named)
+        or _slice_word(words, k, named)
         for k, (w, s) in enumerate(words)
     )
-    head = body[:end].rstrip().rstrip(",")  # "one washed cloth, in the tub"
+    head = _SLICE_END.sub("", body[:end].rstrip().rstrip(","))  # "one washed cloth, in the tub"
     return bool(words) and listed and names_object_before(head, len(head))
+
+
+# a slice of a named thing ("a warm apple slice", "a cold slice of the bread", h231): the slice is the item
+_SLICE_END = re.compile(r"\s+(?:slice|piece)s?$", re.I)
+
+
+def _slice_word(words: list[tuple[str, int]], k: int, named: list[tuple[int, int]]) -> bool:
+    """Is the k-th word a slice noun right after its name ("apple slice") or before any name of its list item
+    ("a slice"), or the "of" of "slice of"? ("toast a slice of bread" is a verb and its thing: "toast" names
+    bread too.)"""
+    w, at = words[k]
+    if not k or not (w in G.SLICE_NOUNS or (w == "of" and words[k - 1][0] in G.SLICE_NOUNS)):
+        return False
+    slice_at = at if w != "of" else words[k - 1][1]
+    item_at = max((s for x, s in words if x in {"and", "or", ","} and s < slice_at), default=-1)  # its item's
+    ends = [b for a, b in named if item_at < a < slice_at]
+    return not ends or (w != "of" and ends[-1] == words[k - 1][1] + len(words[k - 1][0]) and len(ends) == 1)
 
 
 # a container and what it holds, then its place: "the pot with the knife in it on the table" (h238)
