@@ -11,8 +11,10 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from household_readings import shared_world
 
 from nl2hltl2plan.config import data_dir
+from nl2hltl2plan.worlds.world import World
 
 DATA = Path(__file__).parent / "data"
 
@@ -110,3 +112,10 @@ def shared_data() -> Path:
     if d is None:
         pytest.skip("../shared/data is absent")
     return d
+
+
+@pytest.fixture(scope="session")
+def world() -> Callable[..., World]:
+    """`world("FloorPlan7")`, `world(plan, trials)`: a world as `load_world` builds it, one per test process
+    for every module that reads in it (each module still pins its own floor plan)."""
+    return shared_world

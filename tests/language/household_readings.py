@@ -5,7 +5,14 @@ from __future__ import annotations
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.translate import translate
+from nl2hltl2plan.suites.alfred.conversion import scenario_world
 from nl2hltl2plan.worlds.world import World
+
+
+def shared_world(plan: str, trials: tuple[str, ...] | list[str] = ()) -> World:
+    """`load_world(plan, trials)`, built once per test process (the `world` fixture's cache, and the
+    trust sets' `world_of`): `translate` only reads a world, and many test modules read in the same few."""
+    return scenario_world({"scene": plan, "source_trials": list(trials)})
 
 
 def reading(text: str, world: World) -> tuple[list[str], list[tuple[str, str]]]:

@@ -20,17 +20,13 @@ PENCIL_BOWL = "place_in_container Pencil in Bowl -> SideTable"
 
 
 @pytest.fixture(scope="module")
-def living_room():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan229")
+def living_room(world):
+    return world("FloorPlan229")
 
 
 @pytest.fixture(scope="module")
-def bedroom():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan330")
+def bedroom(world):
+    return world("FloorPlan330")
 
 
 @pytest.mark.parametrize(

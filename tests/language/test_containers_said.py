@@ -4,15 +4,15 @@
 from __future__ import annotations
 
 import pytest
+from household_readings import shared_world
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds import load_world
 
 
 @pytest.fixture(scope="module")
 def kitchen():
-    return load_world("FloorPlan9")
+    return shared_world("FloorPlan9")
 
 
 def _read(text: str, world) -> list[tuple[str, list[str], list[str], list[str]]] | None:

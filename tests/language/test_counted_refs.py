@@ -8,12 +8,12 @@ third X" picked one of several, "one more potato" was the same potato, and a cou
 from __future__ import annotations
 
 import pytest
+from household_readings import shared_world
 
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar.counted_refs import counted_references
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds import load_world
 
 needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
 
@@ -25,7 +25,7 @@ SHAKERS = (
 
 
 def _read(text: str, world: str, trials: tuple[str, ...] = SHAKERS):
-    res = translate(text, load_world(world, list(trials)), "offline", build=False, actions="none")
+    res = translate(text, shared_world(world, list(trials)), "offline", build=False, actions="none")
     tasks = [(t.kind, t.object[0], t.count, (t.receptacle or t.light or [None])[0]) for t in res.tasks]
     return tasks, set(res.before), res.unparsed
 

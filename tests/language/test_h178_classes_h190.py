@@ -52,10 +52,8 @@ POTATO = "heat_place Potato -> GarbageCan"
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan1")
+def kitchen(world):
+    return world("FloorPlan1")
 
 
 MUG_SINK, APPLE_FRIDGE = "place Mug -> SinkBasin", "place Apple -> Fridge"

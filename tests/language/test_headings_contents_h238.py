@@ -56,17 +56,13 @@ def test_a_place_heading_puts_each_item_there(text, said):
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan28")
+def kitchen(world):
+    return world("FloorPlan28")
 
 
 @pytest.fixture(scope="module")
-def bedroom():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan317")
+def bedroom(world):
+    return world("FloorPlan317")
 
 
 @pytest.mark.data

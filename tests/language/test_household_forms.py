@@ -18,10 +18,8 @@ from nl2hltl2plan.language.translate import translate
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan1")
+def kitchen(world):
+    return world("FloorPlan1")
 
 
 ON_COUNTER = "move the soap on the counter top to the toilet"  # a landmark, read as the counter too

@@ -66,10 +66,8 @@ def test_a_verb_that_names_an_appliance_is_repeated_as_the_verb():
 
 
 @pytest.fixture(scope="module")
-def living_room():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan219")
+def living_room(world):
+    return world("FloorPlan219")
 
 
 @pytest.mark.data

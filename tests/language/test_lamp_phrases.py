@@ -37,10 +37,8 @@ def test_lamp_phrasings_are_rewritten_onto_the_read_forms(text, said):
 
 
 @pytest.fixture(scope="module")
-def living_room():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan219")
+def living_room(world):
+    return world("FloorPlan219")
 
 
 @pytest.mark.data

@@ -16,9 +16,7 @@
 from __future__ import annotations
 
 import pytest
-from household_readings import reading, refusal
-
-from nl2hltl2plan.worlds import load_world
+from household_readings import reading, refusal, shared_world
 
 READ = [
     (
@@ -91,24 +89,24 @@ REFUSED_SWEEP = [
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, tasks", READ)
 def test_a_landmark_of_the_thing_is_where_it_is(floor_plan: str, text: str, tasks: list[str]) -> None:
-    assert reading(text, load_world(floor_plan))[0] == tasks
+    assert reading(text, shared_world(floor_plan))[0] == tasks
 
 
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, words", REFUSED)
 def test_a_landmark_that_may_be_the_destination_is_refused(floor_plan: str, text: str, words: str) -> None:
-    assert words in refusal(text, load_world(floor_plan))
+    assert words in refusal(text, shared_world(floor_plan))
 
 
 @pytest.mark.sweep
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, tasks", READ_SWEEP)
 def test_more_landmarks_of_the_thing(floor_plan: str, text: str, tasks: list[str]) -> None:
-    assert reading(text, load_world(floor_plan))[0] == tasks
+    assert reading(text, shared_world(floor_plan))[0] == tasks
 
 
 @pytest.mark.sweep
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, words", REFUSED_SWEEP)
 def test_more_landmarks_that_may_be_the_destination(floor_plan: str, text: str, words: str) -> None:
-    assert words in refusal(text, load_world(floor_plan))
+    assert words in refusal(text, shared_world(floor_plan))

@@ -24,17 +24,13 @@ from nl2hltl2plan.language.unsupported_steps import taken_out
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan1")
+def kitchen(world):
+    return world("FloorPlan1")
 
 
 @pytest.fixture(scope="module")
-def living_room():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan201")
+def living_room(world):
+    return world("FloorPlan201")
 
 
 _APPLE_AND_WASHED_MUG = ["place Apple -> Fridge", "clean_place Mug -> Fridge"]

@@ -9,24 +9,20 @@
 
 from __future__ import annotations
 
-from functools import cache
-
 import pytest
+from household_readings import shared_world
 
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds import load_world
-from nl2hltl2plan.worlds.tabletop_world import tabletop_world
 from nl2hltl2plan.worlds.world import World
 
 BOTH = pytest.mark.parametrize("backend", ["offline", "grammar"])
 needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
 
 
-@cache
 def _world(name: str) -> World:
-    return tabletop_world() if name == "tabletop" else load_world(name)
+    return shared_world(name)
 
 
 def _summaries(text: str, world: str, backend: str = "offline") -> list[str]:

@@ -19,17 +19,17 @@ treatment said as a purpose, and a side that says which drawer.
 from __future__ import annotations
 
 import pytest
+from household_readings import shared_world
 
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds import load_world
 
 needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
 
 
 def _read(text: str, world: str = "FloorPlan12") -> tuple[list[tuple[object, ...]], bool]:
-    res = translate(text, load_world(world), "offline", build=False, actions="none")
+    res = translate(text, shared_world(world), "offline", build=False, actions="none")
     tasks = [(t.kind, t.object[0], (t.receptacle or [None])[0]) for t in res.tasks]
     return tasks, res.partial
 
@@ -89,7 +89,7 @@ def test_before_treating_it_and_a_side_of_a_whole_thing_stay_unread():
     ],
 )  # fmt: skip
 def test_a_lists_closing_any_time_frees_each_thing(text, before):
-    res = translate(text, load_world("FloorPlan17"), "offline", build=False, actions="none")
+    res = translate(text, shared_world("FloorPlan17"), "offline", build=False, actions="none")
     assert not res.partial and set(res.before) == before
 
 

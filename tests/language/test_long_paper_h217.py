@@ -13,16 +13,16 @@ tested on lines of our own (never a line of the dataset).
 from __future__ import annotations
 
 import pytest
+from household_readings import shared_world
 
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds import load_world
 
 needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
 
 
 def _read(text: str, world: str) -> tuple[list[tuple[object, ...]], set[tuple[str, str]], bool]:
-    res = translate(text, load_world(world), "offline", build=False, actions="none")
+    res = translate(text, shared_world(world), "offline", build=False, actions="none")
     tasks = [(t.kind, t.object[0], (t.receptacle or [None])[0], t.count) for t in res.tasks]
     return tasks, {(a, b) for a, b in res.before}, res.partial
 

@@ -12,18 +12,17 @@
 from __future__ import annotations
 
 import pytest
-from household_readings import reading
+from household_readings import reading, shared_world
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.grammar.everyday import everyday_names
 from nl2hltl2plan.language.household_words import descriptive_name_notes, descriptive_names
 from nl2hltl2plan.language.learned.data import load_examples
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds import load_world
 
 
 def _world(floor_plan: str):
-    return load_world(floor_plan)
+    return shared_world(floor_plan)
 
 
 @pytest.mark.parametrize(
@@ -157,6 +156,6 @@ TRAIN_ANNOTATIONS = [
 @pytest.mark.parametrize("floor_plan, text, slot, type_", TRAIN_ANNOTATIONS)
 def test_train_annotations_of_each_class(floor_plan: str, text: str, slot: str, type_: str) -> None:
     trial = next(e.trial for e in load_examples()["train"] if e.text == text and e.floor_plan == floor_plan)
-    res = translate(text, load_world(floor_plan, [trial]), build=False, actions="none")
+    res = translate(text, shared_world(floor_plan, [trial]), build=False, actions="none")
     assert not res.partial, res.unparsed
     assert any(type_ in (getattr(t, slot) or []) for t in res.tasks)

@@ -19,10 +19,8 @@ from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan1")
+def kitchen(world):
+    return world("FloorPlan1")
 
 
 @pytest.mark.data

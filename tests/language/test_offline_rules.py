@@ -31,10 +31,8 @@ def closure(r) -> set[tuple[str, str]]:
 
 
 @pytest.fixture(scope="module")
-def demo():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("demo")
+def demo(world):
+    return world("demo")
 
 
 # ----- the flagship instruction and the paper's Example 1 -------------------------------------------------

@@ -14,13 +14,13 @@ references the rules left unread or read wrong.
 from __future__ import annotations
 
 import pytest
+from household_readings import shared_world
 
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.language.grammar.lamp_phrases import lamp_phrasing
 from nl2hltl2plan.language.grammar.repeats import repeated_for_another
 from nl2hltl2plan.language.grammar.sentence_joins import holder_named
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds import load_world
 
 needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
 
@@ -29,7 +29,7 @@ Reading = tuple[list[tuple[object, ...]], set[tuple[str, str]]]
 
 
 def _read(text: str, world: str, backend: str = "offline") -> Reading:
-    res = translate(text, load_world(world), backend, build=False, actions="none")
+    res = translate(text, shared_world(world), backend, build=False, actions="none")
     assert not res.partial, res.unparsed
     tasks = [
         (t.kind, t.object[0], (t.container or [None])[0], (t.receptacle or t.light or [None])[0])

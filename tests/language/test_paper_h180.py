@@ -17,12 +17,12 @@ other than order that the rules left unread or read wrong.
 from __future__ import annotations
 
 import pytest
+from household_readings import shared_world
 
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.grounding import plural_name
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds import load_world
 
 needs_data = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
 
@@ -30,7 +30,7 @@ Reading = tuple[list[tuple[object, ...]], set[tuple[str, str]]]
 
 
 def _read(text: str, world: str) -> Reading:
-    res = translate(text, load_world(world), "offline", build=False, actions="none")
+    res = translate(text, shared_world(world), "offline", build=False, actions="none")
     assert not res.partial, res.unparsed
     tasks = [
         (t.kind, t.object[0], t.count, (t.container or [None])[0], (t.receptacle or t.light or [None])[0])

@@ -8,22 +8,15 @@ under `-m sweep`."""
 from __future__ import annotations
 
 import pytest
-from household_readings import reading
+from household_readings import reading, shared_world
 
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.worlds.world import World
 
 pytestmark = pytest.mark.data
 
-_WORLDS: dict[str, World] = {}
-
-
 def world(name: str) -> World:
-    from nl2hltl2plan.worlds import load_world
-
-    if name not in _WORLDS:
-        _WORLDS[name] = load_world(name)
-    return _WORLDS[name]
+    return shared_world(name)
 
 
 LAMP_BEFORE_A_LIST = [

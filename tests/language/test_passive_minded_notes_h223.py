@@ -70,10 +70,8 @@ def test_to_do_lists_are_one_sentence_an_item(text, items):
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan7")
+def kitchen(world):
+    return world("FloorPlan7")
 
 
 @pytest.mark.data

@@ -21,10 +21,8 @@ def spec(i: str, obj: str, kind: str = "place", rec: str = "Fridge", **kw) -> Ba
 
 
 @pytest.fixture(scope="module")
-def demo():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("demo")
+def demo(world):
+    return world("demo")
 
 
 def test_build_htt_single_task_is_the_root_leaf():

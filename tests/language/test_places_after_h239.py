@@ -53,10 +53,8 @@ def test_two_things_with_one_need_share_the_place():
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan7")
+def kitchen(world):
+    return world("FloorPlan7")
 
 
 @pytest.mark.data

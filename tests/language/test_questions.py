@@ -179,10 +179,8 @@ def test_new_forms_refuse_what_is_unclear(text, named):
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan1")
+def kitchen(world):
+    return world("FloorPlan1")
 
 
 @pytest.mark.data

@@ -15,11 +15,10 @@ exit 0 (results/language/h206.md).
 from __future__ import annotations
 
 import pytest
-from household_readings import full_reading
+from household_readings import full_reading, shared_world
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds import load_world
 
 READ = [
     (
@@ -81,14 +80,14 @@ REFUSED_SWEEP = [
 
 
 def _tasks(floor_plan: str, text: str) -> list[str]:
-    tasks, _, unread, _ = full_reading(text, load_world(floor_plan))
+    tasks, _, unread, _ = full_reading(text, shared_world(floor_plan))
     assert not unread, unread
     return tasks
 
 
 def _refused_naming(floor_plan: str, text: str, words: str) -> None:
     try:
-        res = translate(text, load_world(floor_plan), build=False, actions="none")
+        res = translate(text, shared_world(floor_plan), build=False, actions="none")
     except Nl2Hltl2PlanError as e:
         assert words in str(e)
         return
@@ -127,5 +126,5 @@ def test_the_floor_lamp_one_still_names_the_one_task_under_it() -> None:
         "Look at the watch under the floor lamp and look at the box under the desk lamp. "
         "After the floor lamp one, put the keys in the drawer."
     )
-    _, before, unread, _ = full_reading(text, load_world("FloorPlan205"))
+    _, before, unread, _ = full_reading(text, shared_world("FloorPlan205"))
     assert not unread and before == [("A", "C")]

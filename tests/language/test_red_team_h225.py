@@ -14,10 +14,8 @@ from nl2hltl2plan.language.unknown_words import unknown_things
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan1")
+def kitchen(world):
+    return world("FloorPlan1")
 
 
 @pytest.mark.parametrize(

@@ -15,10 +15,8 @@ from household_readings import outcome, refusal
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan1")
+def kitchen(world):
+    return world("FloorPlan1")
 
 
 @pytest.mark.data

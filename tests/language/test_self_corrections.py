@@ -16,10 +16,8 @@ from nl2hltl2plan.language.translate import translate
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan1")
+def kitchen(world):
+    return world("FloorPlan1")
 
 
 MUG_CABINET, APPLE_FRIDGE = "place Mug -> Cabinet", "place Apple -> Fridge"

@@ -31,10 +31,8 @@ def test_a_treatment_and_the_placing_of_it_are_joined(text, said):
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan17")
+def kitchen(world):
+    return world("FloorPlan17")
 
 
 @pytest.mark.data

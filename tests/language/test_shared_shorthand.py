@@ -45,10 +45,8 @@ def test_shorthand_is_read_and_letters_stay(text, read):
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan1")
+def kitchen(world):
+    return world("FloorPlan1")
 
 
 @pytest.mark.data
@@ -85,10 +83,8 @@ def test_tabletop_reads_the_shared_words():
 
 
 @pytest.fixture(scope="module")
-def square():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("handover-square")
+def square(world):
+    return world("handover-square")
 
 
 @pytest.mark.parametrize(

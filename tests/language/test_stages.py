@@ -18,11 +18,9 @@ DATA = Path(__file__).parent / "data"
 RECORDED = json.loads((DATA / "recorded_demo.json").read_text())
 
 
-@pytest.fixture
-def demo():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("demo")
+@pytest.fixture(scope="module")  # read only: one demo world for the module
+def demo(world):
+    return world("demo")
 
 
 def make_client(stub, tmp_path=None) -> LLMClient:

@@ -9,11 +9,10 @@ places is the destination. A landmark as the only place after the verb stays ref
 from __future__ import annotations
 
 import pytest
-from household_readings import reading
+from household_readings import reading, shared_world
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds import load_world
 
 READ = [
     ("FloorPlan1", "The mug in the sink goes in the microwave.", ["place Mug -> Microwave"]),
@@ -56,18 +55,18 @@ READ_SWEEP = [
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, tasks", READ)
 def test_a_place_in_the_subject_is_where_the_thing_is(floor_plan: str, text: str, tasks: list[str]) -> None:
-    assert reading(text, load_world(floor_plan))[0] == tasks
+    assert reading(text, shared_world(floor_plan))[0] == tasks
 
 
 @pytest.mark.sweep
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, tasks", READ_SWEEP)
 def test_more_places_in_subjects(floor_plan: str, text: str, tasks: list[str]) -> None:
-    assert reading(text, load_world(floor_plan))[0] == tasks
+    assert reading(text, shared_world(floor_plan))[0] == tasks
 
 
 @pytest.mark.data
 def test_a_landmark_after_the_verb_is_no_destination() -> None:
     """ "goes next to the stove" says no place to put it: refused, as "put it next to the stove" is."""
     with pytest.raises(Nl2Hltl2PlanError, match="next to the stove"):
-        translate("The apple by the sink goes next to the stove.", load_world("FloorPlan1"), build=False)
+        translate("The apple by the sink goes next to the stove.", shared_world("FloorPlan1"), build=False)

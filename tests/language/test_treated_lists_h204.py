@@ -64,10 +64,8 @@ def _read(text: str, world) -> tuple[list[str], list[tuple[str, str]]] | str:
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan7")
+def kitchen(world):
+    return world("FloorPlan7")
 
 
 @pytest.mark.data

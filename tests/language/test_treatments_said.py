@@ -74,10 +74,8 @@ def test_an_order_naming_a_thing_in_no_placement_orders_nothing():
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan7")
+def kitchen(world):
+    return world("FloorPlan7")
 
 
 @pytest.mark.data

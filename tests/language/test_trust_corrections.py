@@ -4,25 +4,22 @@ naming the words, next to a near miss that keeps its right reading."""
 
 from __future__ import annotations
 
-from functools import cache
-
 import pytest
+from household_readings import shared_world
 
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds import load_world
 from nl2hltl2plan.worlds.world import World
 
 pytestmark = pytest.mark.skipif(data_dir(required=False) is None, reason="needs ../shared/data")
 BOTH = pytest.mark.parametrize("backend", ["offline", "grammar"])
 
 
-@cache
 def _world(name: str) -> World:
-    return load_world(name)
+    return shared_world(name)
 
 
 def _summaries(text: str, world: str, backend: str) -> list[str]:

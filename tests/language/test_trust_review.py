@@ -4,14 +4,12 @@ the grammar alone; the right outcome is the right reading or a refusal naming th
 
 from __future__ import annotations
 
-from functools import cache
-
 import pytest
+from household_readings import shared_world
 
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.translate import translate
-from nl2hltl2plan.worlds import load_world
 from nl2hltl2plan.worlds.world import World
 
 pytestmark = [
@@ -21,9 +19,8 @@ pytestmark = [
 MUG, APPLE, EGG = "place Mug -> SinkBasin", "place Apple -> Fridge", "place Egg -> Microwave"
 
 
-@cache
 def _kitchen() -> World:
-    return load_world("FloorPlan1")
+    return shared_world("FloorPlan1")
 
 
 def reading(text: str, backend: str) -> tuple[list[str], set[tuple[str, str]]]:

@@ -23,10 +23,8 @@ LETTUCE, MUG = "place Lettuce -> Fridge", "place Mug -> SinkBasin"
 
 
 @pytest.fixture(scope="module")
-def kitchen():
-    from nl2hltl2plan.worlds import load_world
-
-    return load_world("FloorPlan2")
+def kitchen(world):
+    return world("FloorPlan2")
 
 
 @pytest.mark.parametrize(

@@ -13,9 +13,7 @@
 from __future__ import annotations
 
 import pytest
-from household_readings import reading, refusal
-
-from nl2hltl2plan.worlds import load_world
+from household_readings import reading, refusal, shared_world
 
 READ = [
     ("FloorPlan303", "The laptop on the desk in the hall goes on the bed.", ["place Laptop -> Bed"]),
@@ -72,20 +70,20 @@ REFUSED = [
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, tasks", READ)
 def test_where_a_thing_is_now_is_no_destination(floor_plan: str, text: str, tasks: list[str]) -> None:
-    assert reading(text, load_world(floor_plan))[0] == tasks
+    assert reading(text, shared_world(floor_plan))[0] == tasks
 
 
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, words", REFUSED)
 def test_a_room_or_return_as_the_only_place_is_refused(floor_plan: str, text: str, words: str) -> None:
-    assert words in refusal(text, load_world(floor_plan))
+    assert words in refusal(text, shared_world(floor_plan))
 
 
 @pytest.mark.sweep
 @pytest.mark.data
 @pytest.mark.parametrize("floor_plan, text, tasks", READ_SWEEP)
 def test_more_places_where_a_thing_is_now(floor_plan: str, text: str, tasks: list[str]) -> None:
-    assert reading(text, load_world(floor_plan))[0] == tasks
+    assert reading(text, shared_world(floor_plan))[0] == tasks
 
 
 def test_pieces_with_no_destination_after_them_are_not_sources() -> None:
