@@ -52,6 +52,7 @@ from nl2hltl2plan.language.landmarks import put_away_unread
 from nl2hltl2plan.language.negation_forms import instead_said, untreated_said
 from nl2hltl2plan.language.negations import exclusions_unread, unmoved_said
 from nl2hltl2plan.language.numbered_steps import step_order
+from nl2hltl2plan.language.request_times import deadline_note, deadlines_dropped, starts_unread
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.self_corrections import corrected, household_roles, in_own_words
@@ -154,12 +155,15 @@ class _HouseholdReader(SharedGrammar):
     def __init__(self, world: World) -> None:
         self.world = world
         self.frames: list[str] = []  # what the general filler rule drops, for `notes`
+        self.deadlines: list[str] = []  # the deadlines met by doing the tasks now, for `notes`
 
     def as_read(self, lines: list[str]) -> str:  # greetings and thanks as every reader drops them; the
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
         text = without_greetings(answered(" ".join(lines)), _names_a_thing)
         self.frames = []
         text = frames_dropped(text, _thing_words(text), self.frames, times=True)
+        self.deadlines = []
+        text = deadlines_dropped(text, _thing_words(text), self.deadlines, self.frames)
         # "Mom says put ...", "P.S.", "I was hoping you could"; "the mug stays put" is "don't move the mug"
         return unmoved_said(untreated_said(instead_said(without_framing(without_reasons(text)))))
 
@@ -169,6 +173,7 @@ class _HouseholdReader(SharedGrammar):
 
     def notes(self, instruction: str) -> list[str]:
         named = descriptive_name_notes(household_forms(instruction), set(self.world.object_types()))
+        named += [deadline_note(self.deadlines)] if self.deadlines else []
         return [*named, frame_note(self.frames)] if self.frames else named
 
     def unused(self, res: LanguageResult) -> list[Unread]:
@@ -182,7 +187,12 @@ class _HouseholdReader(SharedGrammar):
         # what no reading can tell: "Cheers, Mug", "Thanks for putting ...", "all but the mug" (h208)
         said = res.instruction
         unclear = [*courtesy_unread(said, _names_a_thing), *exclusions_unread(said), *put_away_unread(said)]
-        return [*unread, *unclear]
+        read = " ".join(res.unparsed).lower()  # a start the parse already left unread is not said twice
+        starts = [
+            u for u in starts_unread(said, _thing_words(said))
+            if u.words.lower().split(None, 1)[1] not in read
+        ]
+        return [*unread, *unclear, *starts]
 
     def refusal(self, refused: Exception, instruction: str, prepared: str, rest: str) -> Exception:
         hint = contents_hint(instruction)

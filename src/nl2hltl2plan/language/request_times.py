@@ -1,0 +1,96 @@
+"""The time a household request is for (issues 28 and 23, h258). A leading phrase that sets a deadline by
+a time, an occasion or an outside event ("Before I'm back, ...", "By the time the kids get back, ...",
+"Ahead of the weekend, ...") is met by doing the tasks now: it is dropped and said in the notes. A start
+time or a wait on an outside event ("Wait until I'm home, then ...", "At 5 pm, ...") cannot be honoured
+by a plan made now: it is refused by name (`starts_unread`), whatever else reads it. Words in
+`request_times.txt`; a subject that names a thing of the world ("once the mug is clean") is never an
+outside event, and "you" never is (the request's own task: "before you put it away").
+
+>>> deadlines_dropped("Before I'm back, put the mug in the sink.", frozenset({"mug", "sink"}), [], [])
+'put the mug in the sink.'
+>>> deadlines_dropped("Before you put the mug away, wash it.", frozenset({"mug"}), [], [])
+'Before you put the mug away, wash it.'
+>>> deadlines_dropped("Thanks again for last week. This time could you wash it?", frozenset(), [], [])
+'could you wash it?'
+>>> [u.words for u in starts_unread("Wait until I'm home, then wash the mug.", frozenset({"mug"}))]
+["Wait until I'm home"]
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from nl2hltl2plan.language.content_words import Unread, word_categories
+
+
+def _any(words: frozenset[str]) -> str:
+    return "|".join(sorted((w.replace("_", r"\s+") for w in words), key=len, reverse=True))
+
+
+@lru_cache(maxsize=1)
+def _phrases() -> tuple[re.Pattern[str], re.Pattern[str]]:
+    """(a leading deadline phrase, a start phrase), each with its outside subject as group `who`."""
+    w = word_categories("request_times.txt")
+    t = word_categories("frame_times.txt")
+    when = rf"(?:(?:the|this|next|tonight'?s?)\s+)?(?:{_any(t['when'] | t['part'])})s?"
+    clock = r"\d{1,2}(?:[:.]\d\d)?\s*(?:am|pm|o'?clock)\b|noon|midnight"
+    occasion = rf"(?:(?:the|my|our|your|a)\s+)?(?:{_any(w['occasion'])})(?:\s+{when})?"
+    who = r"(?P<who>i|we|he|she|(?:the\s+|my\s+|our\s+)?[a-z]+(?:\s+[a-z]+)?)"
+    being = r"(?:'m|'re|'s|\s+am|\s+are|\s+is|\s+gets?|\s+comes?|\s+get\s+back)"
+    event = rf"{who}(?:{being}\s+(?:{_any(w['back'])})\b|\s+(?:{_any(w['event'])})\b)"
+    what = rf"(?:{event}|{when}|{occasion}|{clock})"
+    lead = rf"(?:(?:{_any(w['lead'])})\s+)?"
+    deadline = rf"^\s*{lead}(?P<phrase>(?:{_any(w['deadline'])})\s+{what})\s*(?:,|:|\s[-–—]+\s)\s*(?=\S)"
+    at = r"(?:^|(?<=[.!?;:]\s)|(?<=\bthen\s))\s*"  # a sentence's or a "then" clause's start
+    start = rf"{at}(?P<phrase>(?:{_any(w['start'])})\s+{what})(?=\s*[,.;:!?]|\s+then\b)"
+    return re.compile(deadline, re.IGNORECASE), re.compile(start, re.IGNORECASE)
+
+
+@lru_cache(maxsize=1)
+def _remarks() -> tuple[re.Pattern[str], re.Pattern[str]]:
+    """(a sentence that thanks for a past time, a leading remark on the occasion before a request)."""
+    w = word_categories("request_times.txt")
+    thanks = r"^\s*(?:thanks|thank\s+you)(?:\s+(?:again|so\s+much))*\s+for\s+"
+    thanks += rf"(?:{_any(w['past'])})\s*[.!]*\s*$"
+    asking = r"(?=(?:could|can|would|will)\s+you\b|please\b)"
+    return re.compile(thanks, re.IGNORECASE), re.compile(rf"^\s*(?:{_any(w['remark'])})\s+{asking}", re.I)
+
+
+def _outside(m: re.Match[str], names: frozenset[str]) -> bool:
+    """Is the phrase's subject (if it has one) no thing of the world, none said before ("they") and not
+    the request's own "you"?"""
+    who = set((m["who"] or "").lower().split())
+    return not (who & (names | word_categories("request_times.txt")["thing"] | {"you"}))
+
+
+def deadlines_dropped(text: str, names: frozenset[str], said: list[str], frames: list[str]) -> str:
+    """`text` without each sentence's leading deadline phrase (added to `said`) and the remarks on a past
+    time or the occasion (added to `frames`: "Thanks again for last week.", "This time could you ...")."""
+    deadline, _ = _phrases()
+    thanks, remark = _remarks()
+    out = []
+    for sentence in re.split(r"(?<=[.!?])\s+", text.strip()):
+        if thanks.match(sentence):
+            frames.append(sentence.strip(" .!"))
+            continue
+        if said_first := remark.match(sentence):
+            frames.append(said_first[0].strip())
+            sentence = sentence[said_first.end() :]
+        if (m := deadline.match(sentence)) and _outside(m, names):
+            said.append(sentence[: m.end()].strip(" ,:-–—"))
+            sentence = sentence[m.end() :]
+        out.append(sentence)
+    return " ".join(out)
+
+
+def deadline_note(said: list[str]) -> str:
+    return "done now: " + ", ".join(f"{p!r} is met" for p in dict.fromkeys(said))
+
+
+def starts_unread(instruction: str, names: frozenset[str]) -> list[Unread]:
+    """Each start time or wait on an outside event the instruction says ("after lunch", "at 5 pm", "once
+    the guests leave", "wait until I'm home")."""
+    _, start = _phrases()
+    why = "no base task waits for a time or an outside event: a plan made now cannot honour it"
+    return [Unread(m["phrase"], "time", why) for m in start.finditer(instruction) if _outside(m, names)]
