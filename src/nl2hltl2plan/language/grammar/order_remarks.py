@@ -228,5 +228,7 @@ def _remark_opens(sentence: str) -> str:
         return f"{t['verb']} {thing}" if t["it"] else f"{t['verb']} {t['part']} of {thing}"
 
     named = _ITS_THING.sub(of_thing, m["clause"], count=1)
+    if named == m["clause"] and re.search(r"\b(?:it|them)\b", named, re.I):
+        return sentence  # "Start with the fridge: put the egg in it": "it" is the remark's thing, kept with it
     return f"{m['lead']}{named}. {thing} {kind}{m['end'] or '.'}"
 
