@@ -2874,3 +2874,52 @@ HELD_H250: dict[str, dict[int, list[str]]] = {
             "you're a star."],
     },
 }
+
+
+# h245 (session 31, issues 24 and 28): held out. The four tasks in two voices of my own (an air-traffic
+# controller, a sports commentator): motion idioms ("make its way onto", "set off for", "find their way
+# into"), narration of what the arm does, a single noun or "my ADJ NOUN" addressed, "Right then,", British
+# spellings. Written with DEV_H245 and committed before any rule changed, scored once at the end.
+HELD_H245: dict[str, dict[int, list[str]]] = {
+    "air_traffic_control": {
+        1: ["Tower to all arms: the green apple is cleared to make its way onto the blue plate, and the "
+            "orange onto the yellow plate. Cheers, captain."],
+        2: ["Traffic advisory: the red apple sets off for the blue plate, the green apple for the pink plate "
+            "and the orange for the yellow plate, in any order. Safe travels."],
+    },
+    "sports_commentator": {
+        3: ["And the arm gently places the carrot on the blue plate, the orange on the yellow plate, the "
+            "green apple on the green plate and the red apple on the pink plate, in no particular order. "
+            "Marvellous stuff, my dear friend!"],
+        4: ["Right then, folks: first the green apple and the orange find their way into the yellow plate, "
+            "then the carrot and the red apple make their way into the blue plate, either order. What a "
+            "finish, partner!"],
+    },
+}
+
+# h245 (session 31): the dev batch written with HELD_H245 (a British foreman, a ranch hand in dialect:
+# "y'all", "oughta", "puttin'", "don't matter none", "mosey on into"; goals said as nouns, "the deliverables
+# are"); measured on first contact.
+DEV_H245: dict[str, dict[int, list[str]]] = {
+    "british_foreman": {
+        1: ["Right then, mate: pop the green apple on the blue plate and the orange on the yellow plate. "
+            "Cheers, guv."],
+        2: ["Morning, chief. The deliverables are the red apple on the blue plate, the green apple on the "
+            "pink plate and the orange on the yellow plate, any order. Brilliant, keep it up!"],
+        3: ["The robot arm gently places the carrot on the blue plate, the orange on the yellow plate, the "
+            "green apple on the green plate and the red apple on the pink plate. Smashing, my good man."],
+        4: ["Right, lads: the green apple and the orange make their way into the yellow plate first, then the"
+            " carrot and the red apple into the blue plate, either order. Marvellous."],
+    },
+    "ranch_hand": {
+        1: ["Howdy, partner. Would y'all mind puttin' the green apple on the blue plate and the orange on the"
+            " yellow plate? Much obliged."],
+        2: ["The red apple oughta go on the blue plate, the green apple on the pink plate and the orange on "
+            "the yellow plate. Don't matter none which goes first, sugar."],
+        3: ["Y'all gonna set the carrot on the blue plate, the orange on the yellow plate, the green apple on"
+            " the green plate and the red apple on the pink plate, any order's fine. Yeehaw!"],
+        4: ["First off, the green apple and the orange mosey on into the yellow plate. Once that's done, the "
+            "carrot and the red apple head on over to the blue plate, whichever order suits ya. Happy "
+            "trails."],
+    },
+}

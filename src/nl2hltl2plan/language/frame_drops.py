@@ -62,7 +62,7 @@ def _timed_frame(fragment: str, names: frozenset[str], **where: bool) -> bool:
 def _times_dropped(sentence: str, seen: Dropped) -> str:
     """The sentence without the leading and closing phrases that only say when the request is for."""
     while (head := _LEAD.match(sentence)) and _timed_frame(
-        head[1], seen.names, edge=True, lead=True, label=head[2] != ","
+        head[1], seen.names, edge=True, outer=True, label=head[2] != ","
     ):
         if seen.dropped is not None:
             seen.dropped.append(head[1].strip())

@@ -14,7 +14,7 @@ from functools import lru_cache
 from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import LOCATIVE, OBJECT_START, word_categories
-from nl2hltl2plan.language.spelling import english_lemmas, english_word
+from nl2hltl2plan.language.spelling import american, english_lemmas, english_word
 
 # what opens a thing's name or a place: after one of these, a word may name what is moved or where to
 _THING_BEFORE = OBJECT_START | LOCATIVE - {"of"} | frozenset("to into onto toward towards".split())
@@ -31,7 +31,8 @@ def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool 
     that names nothing a task needs (h235): a word English knows that is used as something other than a
     noun ("luck", "easy", "gather", "lovely"), never after a determiner or a place's preposition (where it
     may name a thing: "smash that button", "put it on the zebra"); a noun alone only where it addresses
-    the listeners, set off by a comma: a group ("campers", "buddies") or after "my" / "dear" ("my dears").
+    the listeners, set off by a comma: a group ("campers", "buddies") or after "my" / "dear" and the words
+    that describe them ("my dears", "my lovely assistants"); a British spelling is English ("marvellous").
     A word no list of English knows ("gg", a misspelt name) and a word that adds a thing ("too",
     `frame_keeps.txt`: "the zebra too") are never filler.
 
@@ -40,10 +41,10 @@ def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool 
     >>> filler(("campers",), 0, set_off=True), filler(("campers",), 0)
     (True, False)
     """
-    word = words[k]
+    word = american(words[k])  # a British spelling is English: "marvellous", "colour"
     if word in _keeps() or word.isdigit() or not english_word(word):
         return False
-    vocative = set_off and k > 0 and words[k - 1] in ("my", "dear")
+    vocative = (set_off or address) and _after_my(words[:k])
     if any(w in _THING_BEFORE for w in words[:k]) and not vocative:
         return False
     kinds = english_lemmas(word)
@@ -56,6 +57,18 @@ def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool 
         not kinds and word.endswith("s") and english_word(word[:-1])
     )
     return address or (set_off and (group or vocative))
+
+
+def _after_my(before: tuple[str, ...]) -> bool:
+    """Whether the words `before` a word end in "my" or "dear" and the words that describe whom they call:
+    "my", "my lovely", "my good old" ("my lovely assistants", "my good man"), a vocative's opening."""
+    for k in range(len(before) - 1, -1, -1):
+        if before[k] in ("my", "dear"):
+            return True
+        kinds = english_lemmas(american(before[k]))
+        if "ADJ" not in kinds or before[k] in _keeps():
+            return False
+    return False
 
 
 def frame_note(dropped: list[str]) -> str:

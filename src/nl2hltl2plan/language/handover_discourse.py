@@ -152,7 +152,7 @@ def empty(
     whole: bool = False,
     header: bool = False,
     edge: bool = False,
-    lead: bool = False,
+    outer: bool = False,
     general: bool = True,
     names: frozenset[str] = frozenset(),
 ) -> bool:
@@ -188,12 +188,12 @@ def empty(
     if MEANING.search(text) or _ACTION.search(text):
         return False
     parts = parts_of(re.findall(r"[a-z0-9]+", text), marked)
-    set_off = edge or len(parts) > 1  # a part set off by a comma or dash may address the listeners
+    parted = len(parts_of([w for w in marked if w != PART_END], marked)) > 1  # ("Morning, sweetheart")
+    set_off = edge or parted  # a part set off by a comma or dash may address the listeners
 
     def said(ws: tuple[str, ...], k: int) -> bool:
-        # a label's words, and a word alone that opens a sentence or stands beside another part ("Squad,
-        # ...", "Peace out, chat"), may be nouns: they name the document or the listeners
-        address = label or (set_off and len(ws) == 1 and (lead or len(parts) > 1))
+        # a label's words, a word alone at an edge or by another part ("Squad, ...", "..., sweetheart"): nouns
+        address = label or (set_off and len(ws) == 1 and (outer or parted))
         return filler(ws, k, set_off, address)
 
     def frame_word(ws: tuple[str, ...], k: int) -> bool:
@@ -268,8 +268,8 @@ def _label_restated(label: str, after: str, names: frozenset[str]) -> str:
 
 def heads_dropped(sentence: str, header: bool = False, seen: Dropped = _NOTHING_SEEN) -> str:
     """The sentence without its empty labels ("Re: ...:", "Copy that: ...", a label that only says again
-    what the sentence under it names: "Carrot duty:") and its empty leading phrases ("Okay robot, ...",
-    "Hey arms, uh, ...")."""
+    what the sentence under it names: "Carrot duty:") and its empty leading phrases ("Okay robot, ...")."""
+    whole = sentence
     while True:
         label = _LABEL.match(sentence) or _DASHED.match(sentence)
         bare = _label_restated(label.group(1), sentence[label.end() :], seen.names) if label else ""
@@ -279,16 +279,17 @@ def heads_dropped(sentence: str, header: bool = False, seen: Dropped = _NOTHING_
             break
         said = head.group(1)
         if head is label:
-            # a reader with its own labels (`only_general`: the tabletop's fields, methods, checklists)
-            # loses a label only where it restates its sentence's names or numbers the text's header
-            kept = seen.only_general and bare == said and not (header and re.search(r"\d", said))
+            # a reader with its own labels (`only_general`: the tabletop's fields, methods) loses a label
+            # only where it restates its sentence's names, numbers the header, or is set off ("Right, mate:")
+            kept = seen.only_general and bare == said and "," not in said and sentence is whole
+            kept = kept and not (header and re.search(r"\d", said))
             # a label only the general rule empties heads a command ("Morning activity: move ..."); one
             # before words with no verb is a field's name ("Target: region I, all three blocks")
             general = not empty(bare, label=True, header=header, general=False, names=seen.names)
             field = general and not _ACTION.search(sentence[head.end() :].lower())
             if kept or field or not frame_gone(bare, seen, shown=said, label=True, header=header):
                 break
-        elif not (frame_gone(said, seen, edge=True, lead=True, header=header) or _called(said)):
+        elif not (frame_gone(said, seen, edge=True, outer=True, header=header) or _called(said)):
             break
         sentence = sentence[head.end() :]
     return sentence
@@ -300,9 +301,9 @@ def tails_dropped(sentence: str, seen: Dropped = _NOTHING_SEEN) -> str:
     # (what only the general rule drops must leave a clause, not a turn phrase of three words or fewer:
     # "That done, relax")
     short = tail is not None and len(sentence[: tail.start()].split()) <= 3
-    if short and tail and not empty(tail.group(1), edge=True, general=False, names=seen.names):
+    if short and tail and not empty(tail.group(1), edge=True, outer=True, general=False, names=seen.names):
         tail = None
-    if tail and frame_gone(tail.group(1), seen, edge=True):
+    if tail and frame_gone(tail.group(1), seen, edge=True, outer=True):
         sentence = sentence[: tail.start()]
     # and a phrase set off by commas inside it ("then, robots, put ..."); a hesitation ("the three, uh, the
     # three objects") stays, for `handover_spoken` to tell a phrase said again from a correction

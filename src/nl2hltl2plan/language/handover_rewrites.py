@@ -14,11 +14,13 @@ from nl2hltl2plan.language.handover_words import (
     NEG,
     NEGATED_GERUNDS,
     PERIOD_WORDS,
+    SET_OFF_FOR,
     STEP_NUMBER,
     STEP_WORD,
     SWAP,
     TOUCH,
     VERB,
+    WAY_IDIOM,
 )
 
 # a heading's label of a rule ("Rule:", "Constraint:")
@@ -260,7 +262,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
     (r"\b(?:somebody|someone|anybody|anyone)\b", "an arm"),  # "until somebody has touched the red block"
     # narrative verbs of moving: "makes a stop at I", "moves on to G", "takes the blue block's place"
     (r"\b(?:makes?|making)\s+a\s+stop\s+(?:at|on|in)\b", "goes to"),
-    (r"\b(?:heads?|heading)\s+(?=to\b|towards?\b)", "goes "),
+    (SET_OFF_FOR, "goes to"),  # idioms of moving (`handover_words`): "heads (on over) to", "makes its way to"
+    (WAY_IDIOM, "goes "),
     (
         r"\b(?:takes?|gets?|occup(?:y|ies))\s+(?=(?:the\s+)?(?:red|blue|yellow)\s+(?:block\s+|one\s+)?s\s+"
         r"(?:place|position|spot)\b)",

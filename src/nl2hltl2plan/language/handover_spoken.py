@@ -51,6 +51,12 @@ _CONTRACTIONS = (
     (r"\bwanna\b", "want to"),
     (r"\bgotta\b", "have to"),
     (r"\b(?:kinda|sorta)\b", " "),
+    # a dialect's dropped letters: "movin'", "puttin'" (the g), "'fore" (be-), "oughta"
+    (r"\b([a-z]{2,}in)\s*'(?=\s|$|[,.;:!?])", r"\1g"),
+    (r"(?<![a-z])'\s*fore\b", "before"),
+    (r"\boughta\b", "ought to"),
+    (r"\by\s*'\s*all\b", "you"),  # "would y'all mind", "y'all gonna move"
+    (r"\bthem\s+(?=(?:three|two|both|red|blue|yellow|blocks?|pillars?|objects?)\b)", "the "),  # "them blocks"
 )
 _HESITATION = rf"(?:{HESITATION}|ah+)"
 _POLITE_TAG = courtesy_pattern("clause")  # the courtesy frames (`courtesy.txt`)

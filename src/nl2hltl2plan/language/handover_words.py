@@ -140,3 +140,12 @@ NEGATED_GERUNDS = {
     "grabbing": "grab",
     "picking up": "pick up",
 }
+
+# idioms of moving, said of the thing moved ("makes its way to", "find their way onto", "heads on over to",
+# "moseys on back to": "back" is kept, it says the place the thing left; "sets off for"): every reader reads
+# them as "goes to" / "goes" (a verb's tense and number change nothing a task needs)
+SET_OFF_FOR = r"\b(?:sets?|setting|heads?|heading)\s+off\s+(?:for|towards?)\b"
+WAY_IDIOM = (
+    r"\b(?:(?:makes?|making|made|finds?|finding|found|wends?|wending)\s+(?:its|their)\s+way|heads?|heading|"
+    r"moseys?|moseying)(?:\s+(?:on|over|off|along))*\s+(?=(?:back\s+)?(?:to|towards?|into|onto)\b)"
+)

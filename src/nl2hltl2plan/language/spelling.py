@@ -227,10 +227,19 @@ def _respellable(word: str) -> bool:
 
 
 def _american(low: str) -> list[str]:
-    """The word and its American spellings ("colour", "neighbours", "normalised"): the word list is
-    American, and a British spelling is no misspelling."""
+    """The word and its American spellings ("colour", "neighbours", "normalised", "marvellous",
+    "travellers"): the word list is American, and a British spelling is no misspelling ("-tre" is left:
+    "aftre" is "after" misspelt)."""
     out = [low, low.replace("our", "or"), re.sub(r"is(e|ed|es|ing|ation)$", r"iz\1", low)]
-    return [*out, re.sub(r"ll(ed|ing)$", r"l\1", low)]
+    return [*out, re.sub(r"ll(ed|ing|ous|ers?|ors?)$", r"l\1", low)]
+
+
+def american(word: str) -> str:
+    """`word` (lower case) as English's American list spells it, where one of its American spellings is
+    English and it is not ("marvellous": "marvelous"); else `word`."""
+    if english_word(word):
+        return word
+    return next((w for w in _american(word) if english_word(w)), word)
 
 
 def respelt(text: str) -> str:

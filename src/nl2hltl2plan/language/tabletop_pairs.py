@@ -69,6 +69,7 @@ from nl2hltl2plan.language.tabletop_wording import (
     last_group_free,
     last_item_unmarked,
     mention_pattern,
+    moving_idioms_read,
     plain_words,
     stated_not_asked,
 )
@@ -181,7 +182,7 @@ class TabletopReader:
         (`tabletop_spelling`); a user story's role ("As a tidy person, I want ..."); "the first thing to
         do is" as "first" (`tabletop_order.ordinal_things_read`); "the robot puts / has put" said to the
         one asked (`tabletop_order.robot_addressed`); a clause that looks back on the step before as
-        "then" (`tabletop_order.turn_phrases_read`)."""
+        "then" (`tabletop_order.turn_phrases_read`); "makes its way into" as "goes into"."""
         kinds = {camel_words(t): _is_plate(t) for t in self.world.object_types()}
         self.frames = []  # what the general filler rule drops, for `notes`
         text = names_spelt(stops_read(chat_read(lines_joined(lines, kinds), kinds, self.frames)), kinds)
@@ -193,7 +194,7 @@ class TabletopReader:
         mentions = mention_pattern(kinds, re.I)
         text = role_dropped(text, mentions)  # "As a tidy person, I want ..."
         text = robot_addressed(ordinal_things_read(text, mentions))  # "The first thing is ...", "it puts"
-        text = end_opener_read(turn_phrases_read(text))  # "Having done that,", "By the end I want"
+        text = moving_idioms_read(end_opener_read(turn_phrases_read(text)))  # "Having done that,"
         return order_words_spelt(names_respelt(text, kinds))
 
     def prepared(self, instruction: str) -> str:

@@ -29,6 +29,7 @@ from collections.abc import Iterable
 from nl2hltl2plan.language.content_words import free_order_remarks
 from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.grounding import sentence_start
+from nl2hltl2plan.language.handover_words import SET_OFF_FOR, WAY_IDIOM
 from nl2hltl2plan.language.statements import WHERE_VERB, asked_before
 from nl2hltl2plan.language.tabletop_remarks import FREE_ORDER, TIDY_VERB, remarks_read
 from nl2hltl2plan.language.tabletop_waits import plate_waits_read
@@ -181,6 +182,21 @@ def plain_words(text: str, kinds: dict[str, bool], heads: dict[str, list[str]]) 
     text = _APPOSITION.sub(lambda m: m[0] if _names_a_word(m["words"], kinds) else ",", text)
     text = corrected(text, kinds)
     return _plurals_named(text, kinds, heads)
+
+
+# the subject and "do" inverted after a time clause: "only once both are in do the carrot and the apple go
+# ..." is "once both are in, the carrot and the apple go ..."
+_DO_INVERTED = re.compile(
+    r"\b((?:only\s+)?(?:once|after|when)\b[^.,;:]*?)\s+do\s+(?=the\b[^.,;:]*?\b(?:go|goes)\b)", re.I
+)
+
+
+def moving_idioms_read(text: str) -> str:
+    """`text` with the idioms of moving said as "goes (to)" (`handover_words.WAY_IDIOM`, `SET_OFF_FOR`): "the
+    orange makes its way into the yellow plate", "the carrot sets off for the blue plate"; and "do" after a
+    time clause put back (`_DO_INVERTED`)."""
+    text = re.sub(WAY_IDIOM, "goes ", re.sub(SET_OFF_FOR, "goes to", text, flags=re.I), flags=re.I)
+    return _DO_INVERTED.sub(r"\1, ", text)
 
 
 def _letter_frame_dropped(text: str, kinds: dict[str, bool]) -> str:
