@@ -80,15 +80,15 @@ def _is_heading(words: str) -> bool:
         plain = word.removesuffix("'s")
         if word in _blocking() or plain in _blocking():
             return False
-        # a verb the readers read is a command ("Chill time:"), unless it also names a thing ("Microwave duty")
-        # or is a noun's part ("tidy-up time")
+        # a verb the readers read is a command ("Chill time:"), unless it also names a thing ("Microwave
+        # duty") or is a noun's part ("tidy-up time")
         if plain in _verbs() and not find_mentions(plain):
             return False
     return True
 
 
 def _numbers_parts(heading: re.Match[str], text: str) -> bool:
-    """Whether the heading's kind and number ("Card 1") number another part of the text too ("Card 2: ...")."""
+    """Whether the heading's kind and number ("Card 1") number another part of the text ("Card 2: ...")."""
     kind = re.match(r"\s*([A-Za-z]+)\s+#?\d", heading["words"])
     return kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[heading.end() :], re.I) is not None
 

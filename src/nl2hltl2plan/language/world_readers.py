@@ -43,9 +43,9 @@ from nl2hltl2plan.language.courtesy import (
     without_reasons,
 )
 from nl2hltl2plan.language.frame_drops import frames_dropped
-from nl2hltl2plan.language.heading_names import heading_dropped, heading_note
 from nl2hltl2plan.language.frame_filler import frame_note
 from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.heading_names import heading_dropped, heading_note
 from nl2hltl2plan.language.headings import answered, note_counts
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_name_notes, descriptive_names
