@@ -32,7 +32,7 @@ from __future__ import annotations
 import re
 from typing import NamedTuple
 
-from nl2hltl2plan.language.content_words import phrase_category, shared_words
+from nl2hltl2plan.language.content_words import free_order_phrase, phrase_category, shared_words
 from nl2hltl2plan.language.questions import answered
 
 __all__ = ["CountedHeading", "answered", "counted_headings", "note_counts", "unlabelled"]
@@ -81,6 +81,8 @@ def _counted(start: str) -> re.Pattern[str]:
         rf"{start}(?:(?:(?:today|now),?\s+)?(?:there\s+are|here\s+are|(?:we|you|i)\s+have|(?:the\s+robot|it)\s+has)\s+)?"
         rf"(?P<phrase>(?P<count>\d|{'|'.join(_COUNT_WORDS)})\s+(?:(?!{_NOT_A_TOTAL}\b)[a-z]+\s+)?(?:(?P<stages>{_STAGE_NOUNS})|{_TASK_NOUNS})"
         r"(?:\s+(?:to\s+(?:do|place|make|carry\s+out)|in\s+(?:all|total)|for\s+(?:you|the\s+robot|today)))?)"
+        # "Three jobs, any order:": the order the heading frees is read with the tasks, not counted
+        rf"(?:\s*,?\s*{free_order_phrase('whole')})?"
         r"\s*(?P<end>[:.!,]|\s-+\s|\s*[—–])",
         re.I,
     )

@@ -45,6 +45,7 @@ from nl2hltl2plan.language.courtesy import (
 from nl2hltl2plan.language.frame_drops import frames_dropped
 from nl2hltl2plan.language.frame_filler import frame_note
 from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.heading_names import heading_dropped, heading_note
 from nl2hltl2plan.language.headings import answered, note_counts
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_name_notes, descriptive_names
@@ -156,6 +157,7 @@ class _HouseholdReader(SharedGrammar):
         self.world = world
         self.frames: list[str] = []  # what the general filler rule drops, for `notes`
         self.deadlines: list[str] = []  # the deadlines met by doing the tasks now, for `notes`
+        self.headings: list[str] = []  # the headings `heading_names` drops, for `notes`
 
     def as_read(self, lines: list[str]) -> str:  # greetings and thanks as every reader drops them; the
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
@@ -164,6 +166,9 @@ class _HouseholdReader(SharedGrammar):
         text = frames_dropped(text, _thing_words(text), self.frames, times=True)
         self.deadlines = []
         text = deadlines_dropped(text, _thing_words(text), self.deadlines, self.frames)
+        # a heading whose name is a thing's ("Prep card:", "Lamp game:"): the frame rule keeps thing words
+        self.headings = []
+        text = heading_dropped(text, self.headings)
         # "Mom says put ...", "P.S.", "I was hoping you could"; "the mug stays put" is "don't move the mug"
         return unmoved_said(untreated_said(instead_said(without_framing(without_reasons(text)))))
 
@@ -174,7 +179,8 @@ class _HouseholdReader(SharedGrammar):
     def notes(self, instruction: str) -> list[str]:
         named = descriptive_name_notes(household_forms(instruction), set(self.world.object_types()))
         named += [deadline_note(self.deadlines)] if self.deadlines else []
-        return [*named, frame_note(self.frames)] if self.frames else named
+        heads = [heading_note(self.headings)] if self.headings else []
+        return [*named, frame_note(self.frames), *heads] if self.frames else [*named, *heads]
 
     def unused(self, res: LanguageResult) -> list[Unread]:
         """A note's heading that counts its jobs ("Kiddo, three jobs: ...", dropped with the framing around
