@@ -21,7 +21,8 @@ from nl2hltl2plan.worlds import load_world
         ("the soap gets rinsed and ends up on the toilet", "rinse the soap and put it on the toilet"),
         ("can the spoon be washed and put on the table?", "wash the spoon and put it on the table?"),
         ("first the tomato is to be chilled", "first chill the tomato"),
-        ("another mug should be heated and go back in the cabinet", "heat another mug and put it back in the cabinet"),
+        ("another mug should be heated and go back in the cabinet",
+         "heat another mug and put it back in the cabinet"),
     ],
 )  # fmt: skip
 def test_passive_requests_and_their_places_are_rewritten(text, rewritten):
@@ -55,7 +56,8 @@ def kitchen():
     "text, read",
     [
         ("Can the apple be chilled and put on the counter?", ["cool_place Apple -> CounterTop"]),
-        ("Any chance you could heat a mug and leave it on the coffee maker?", ["heat_place Mug -> CoffeeMachine"]),
+        ("Any chance you could heat a mug and leave it on the coffee maker?",
+         ["heat_place Mug -> CoffeeMachine"]),
         ("Do you think you could wash a bowl and put it on a shelf?", ["clean_place Bowl -> Shelf"]),
         ("The pan needs washing and ends up on the counter.", ["clean_place Pan -> CounterTop"]),
         ("Is the mug clean?", "refused"),  # a question, not a request

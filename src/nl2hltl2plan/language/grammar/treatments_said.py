@@ -112,7 +112,9 @@ _PLACED = (
 _GOES = r"(?:go|goes|belongs?|ends?\s+up|be\s+(?:put|placed|left|set|stored|kept))"
 # a question in the passive ("can the spoon be washed and put ...?", "could the pot get chilled ...?"): the
 # statement's order ("the spoon can be washed ..."), which `need` reads; only before a treatment's participle
-_INVERTED = r"(?P<aux>can|could|should|will|would)\s+(?P<it>(?:the|that|this|my|your|a|an|one)\s+[a-z]+(?:\s+[a-z]+)?)"
+_INVERTED = (
+    r"(?P<aux>can|could|should|will|would)\s+(?P<it>(?:the|that|this|my|your|a|an|one)\s+[a-z]+(?:\s+[a-z]+)?)"
+)
 _AGENT = re.compile(
     rf"{_LEAD}(?:have|get|let)\s+(?:(?:the|a|one)\s+robots?|one\s+of\s+(?:the\s+)?robots|someone|somebody)"
     r"\s+(?:to\s+)?(?P<verb>[a-z]+)\b",
