@@ -127,6 +127,13 @@ _AND_FINISH = re.compile(
     r"\s*,?\s*\band\s+(?:then\s+)?(?=(?:finish|end)\s+(?:up\s+|off\s+)?(?:by|with)\s+[a-z]+ing\b)", re.I
 )
 _ARROW = re.compile(r"\s*->\s*")
+# a checklist item's state said after its thing, "lettuce, chilled -> table", "a plate, chilled, on the shelf"
+# (h260): the state before the thing ("a chilled plate on the shelf"), as a verbless placement says it
+_STATE_AFTER = re.compile(
+    rf"\b(?P<x>[a-z]+)\s*,\s*(?P<s>{'|'.join(sorted(G.STATE_WORDS, key=len, reverse=True))})\s*,?\s+"
+    r"(?=(?:onto|into|in|on|to)\s)",
+    re.I,
+)
 _STEP_COLON = re.compile(r"\b(first|then|next|after\s+that|finally|lastly)\s*:\s*", re.I)
 # a free-order phrase ("any order", "the order doesn't matter"; content_words.free_order_phrase) in brackets
 _FREE_ORDER = free_order_phrase()
@@ -275,6 +282,7 @@ def everyday(text: str) -> str:
     text = _REFERENCE_TO_ALL.sub(_reference_sentence, text)
     text = _PAREN_FREE_ORDER.sub(", in any order", text)
     text = _STEP_COLON.sub(r"\1 ", _ARROW.sub(" onto ", text))
+    text = _STATE_AFTER.sub(lambda m: f"{m['s']} {m['x']} " if find_mentions(m["x"]) else m[0], text)
     if _BELONGS.search(text):
         text = _PUT_THEM_THERE.sub("", text)
     text = _THEN_UNDER_LAMP.sub(_each_under_lamp, text)

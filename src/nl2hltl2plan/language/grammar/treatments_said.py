@@ -54,9 +54,13 @@ def _base(word: str) -> str | None:
     return found[1] if found and found[0] in _TREATMENTS else None
 
 
-_LEAD = r"(?P<lead>^|(?<=[,.;:!?])\s*|\b(?:and|then|please|pls|so)\s+)"
+# (an order word before a passive's thing, "first the tomato is to be chilled ...", "after that the mug needs
+# heating ...", h260: the word stays, before the imperative)
+_LEAD = (
+    r"(?P<lead>^|(?<=[,.;:!?])\s*|\b(?:and|then|please|pls|so|first|next|last|finally|lastly|after\s+that)\s+)"
+)
 # (a note's "one bar of soap to be rinsed ...", h239)
-_THING = r"(?P<thing>(?:the|that|this|my|your|a|an|one)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
+_THING = r"(?P<thing>(?:the|that|this|my|your|a|an|one|another)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
 _PARTICLE = r"(?:\s+(?:up|down|off|out))?"
 
 
@@ -67,7 +71,8 @@ def _patterns() -> tuple[re.Pattern[str], ...]:
         rf"{_LEAD}{_THING}\s+(?:(?:needs?|wants?|could\s+(?:use|do\s+with))\s+"
         rf"(?:(?:a|an)\s+(?:(?:good|quick|proper|little|bit\s+of\s+a)\s+)?(?P<noun>{verbs})"
         rf"|to\s+(?:be|get)\s+(?P<part>{past})|(?P<ger>{verbs}))|{_DUTY}\s+(?P<duty>{past})){_PARTICLE}"
-        rf"(?:\s+and\s+(?P<then>{_PLACED})(?:\s+(?P<adv>away|back|down))?(?=\s+(?:in|into|on|onto|inside)\s)"
+        rf"(?:\s+and\s+(?:then\s+)?(?P<then>{_PLACED}|{_GOES_VERB})(?:\s+(?P<adv>away|back|down))?"
+        r"(?=\s+(?:in|into|on|onto|inside)\s)"
         rf"|{_GOES})?(?![\w'])",
         re.I,
     )
@@ -89,7 +94,8 @@ def _patterns() -> tuple[re.Pattern[str], ...]:
         rf"(?:(?:back|away|down)\s+)?(?=(?:in|into|on|onto|inside)\s))?",
         re.I,
     )
-    return need, causative, purpose, pair
+    inverted = re.compile(rf"{_LEAD}{_INVERTED}\s+(?P<be>be|get)\s+(?=(?:{past})(?![\w']))", re.I)
+    return need, causative, purpose, pair, inverted
 
 
 # the place said after a need as where the thing goes next (h231's "the lettuce needs chilling and then on
@@ -101,9 +107,20 @@ _GOES = (
 )
 # a duty said in the passive ("has to be washed", "should be chilled", a note's "to be rinsed", h223), and the
 # placing said after it in the same voice ("... and put / left / placed on the counter"), of the same thing
-_DUTY = r"(?:(?:has|have|is|are|ought)\s+to\s+(?:be|get)|(?:should|must|will|shall|can)\s+(?:be|get)|to\s+be)"
+# (and in the present, "the soap gets rinsed", or as a question's inverted order, `_INVERTED`, h260)
+_DUTY = (
+    r"(?:(?:has|have|is|are|ought)\s+to\s+(?:be|get)|(?:should|must|will|shall|can|could)\s+(?:be|get)|to\s+be"
+    r"|gets)"
+)
 _PLACED = (
     r"(?:put|putting|placed|placing|set|setting|left|leaving|dropped|dropping|stored|storing|kept|keeping)"
+)
+# the placing said as where the thing goes ("... and (then) goes / ends up / belongs on the counter", h260)
+_GOES_VERB = r"(?:go|goes|belongs?|ends?\s+up|be\s+(?:put|placed|left|set|stored|kept))"
+# a question in the passive ("can the spoon be washed and put ...?", "could the pot get chilled ...?"): the
+# statement's order ("the spoon can be washed ..."), which `need` reads; only before a treatment's participle
+_INVERTED = (
+    r"(?P<aux>can|could|should|will|would)\s+(?P<it>(?:the|that|this|my|your|a|an|one)\s+[a-z]+(?:\s+[a-z]+)?)"
 )
 _AGENT = re.compile(
     rf"{_LEAD}(?:have|get|let)\s+(?:(?:the|a|one)\s+robots?|one\s+of\s+(?:the\s+)?robots|someone|somebody)"
@@ -178,7 +195,7 @@ _FIRST_THEN = re.compile(
 )
 # (a slice named by its whole: "a slice of lettuce", "a tomato slice" is one thing, h223)
 _DETERMINER = re.compile(
-    r"\s*(?:(?:the|that|this|my|your|a|an|one)\s+)?(?:(?:slice|piece)s?\s+of\s+(?:the\s+)?)?", re.I
+    r"\s*(?:(?:the|that|this|my|your|a|an|one|another)\s+)?(?:(?:slice|piece)s?\s+of\s+(?:the\s+)?)?", re.I
 )
 _SLICE_AFTER = re.compile(r"\s*(?:slices?)?\s*", re.I)
 # a thing said in a request ("the mug", "watch on the table"), not a bare label ("Target: yellow plate.")
@@ -189,7 +206,7 @@ _PLACE_BEFORE = re.compile(r"\b(?:in|into|on|onto|inside|on\s+top\s+of)\s+(?:the
 
 def treatments_said(text: str) -> str:
     """The text with the needs, causatives and terse orders above rewritten (see the module docstring)."""
-    need, causative, purpose, pair = _patterns()
+    need, causative, purpose, pair, inverted = _patterns()
     text = _TEXTED_ID.sub("I'd ", _minded(text))
     text = treated_lists(text)  # lists, outcomes, things said first (treated_lists)
     text = _MAKE_STATE.sub(_made, text)
@@ -198,6 +215,7 @@ def treatments_said(text: str) -> str:
     text = _PRONOUN_GOAL.sub(_put_pronoun, text)
     text = _AGENT.sub(lambda m: f"{m['lead']}{m['verb']}" if m["verb"].lower() in VERBS else m[0], text)
     text = pair.sub(_both_treated, text)
+    text = inverted.sub(_uninverted, text)
     text = need.sub(_imperative, text)
     text = causative.sub(_imperative, text)
     text = purpose.sub(_treated_next, text)
@@ -238,6 +256,11 @@ def _imperative(m: re.Match[str]) -> str:
     if forms.get("goes_to"):  # "needs chilling (too), then back on the": the place after it
         placed = f"{forms.get('too') or ''} and put it{' ' + adv if adv else ''}"
     return f"{m['lead']}{verb} {thing}{placed}"
+
+
+def _uninverted(m: re.Match[str]) -> str:
+    """ "can the spoon be washed" -> "the spoon can be washed" where the thing is a name the lexicon knows."""
+    return f"{m['lead']}{m['it']} {m['aux'].lower()} {m['be']} " if _names_thing(m["it"]) else m[0]
 
 
 def _both_treated(m: re.Match[str]) -> str:
