@@ -2,7 +2,7 @@
 whose head is a word for a document, a list, an activity or a time ("Prep card:", "Lamp game:", "Kitchen
 bingo!", "Fridge duty.") names no task and is dropped, said in the assumptions; a count in it is checked
 against the reading, and a heading with another head, a verb or a thing's whole name stays to be read or
-refused as before. The dev set's lines (paper_h259dev.txt) are swept under `-m sweep`."""
+refused as before. The dev set's lines (users_h259dev.txt) are swept under `-m sweep`."""
 
 from __future__ import annotations
 
@@ -79,5 +79,5 @@ def test_h259_dev_set() -> None:
     """Every line of h259's dev set converts."""
     import trust_sets
 
-    rows = [(gt, trust_sets.outcome(gt)[0]) for gt in trust_sets.load("paper_h259dev")]
+    rows = [(gt, trust_sets.outcome(gt)[0]) for gt in trust_sets.load("users_h259dev")]
     assert [gt.instruction for gt, what in rows if what != "converted"] == []
