@@ -87,6 +87,7 @@ from nl2hltl2plan.language.spelling import (
     english_frequency,
     english_word,
     known_word,
+    listed_word,
     one_edit,
     structure_word,
     vocabulary_near,
@@ -143,7 +144,7 @@ def _unknown_action(word: str) -> bool:
         return False
     if word.endswith(("ly", "ing", "'s")):  # an adverb, a participle, a possessive
         return False
-    return not known_word(word) and not categories(word) and english_word(word)
+    return not listed_word(word) and not categories(word) and english_word(word)
 
 
 # what is acted on after these words: a placing or treating verb, or the preposition of a destination
@@ -420,7 +421,8 @@ def unread_words(instruction: str, toks: Tokens | None = None) -> list[Unread]:
     """Unknown verbs, things and modifiers, and misspelt order words, in that order (check 1's unknown
     words)."""
     toks = tokens(instruction) if toks is None else toks
-    unknown = unknown_verbs(instruction, toks) + unknown_things(instruction, toks)
+    unknown = unknown_verbs(instruction, toks) + placeless_arrangements(instruction, toks)
+    unknown += exclaimed_things(instruction) + unknown_things(instruction, toks)
     unknown += unknown_modifiers(instruction, toks) + done_already(instruction)
     order = misspelt_order_words(instruction)
     return unknown + order + misspelt_words(instruction, {u.words for u in order})
@@ -465,4 +467,48 @@ def misspelt_words(instruction: str, named: set[str] | frozenset[str] = frozense
         if any(map(structure_word, near)) and low not in named and low not in {u.words for u in out}:
             said = " or ".join(filter(None, [", ".join(map(repr, near[:-1])), repr(near[-1])]))
             out.append(Unread(low, "spelling", f"may misspell {said}: say it as you mean it"))
+    return out
+
+
+ARRANGING_REASON = "no base task lays things together: say where each thing goes"
+
+
+def placeless_arrangements(instruction: str, toks: Tokens) -> list[Unread]:
+    """A command in an arranging verb ("verb_arranging": stack, arrange, serve) with nothing after it but
+    "it"/"them" before its clause ends ("Then stack them.", "Then serve."): no place and no thing of its
+    own, it asks how things lie together, which no base task does (read as nothing, it was dropped)."""
+    out = []
+    for i, (word, start, end) in enumerate(toks):
+        opens = i == 0 or toks[i - 1][0] in _COMMAND_START or _CLAUSE_BREAK.search(
+            instruction[toks[i - 1][2] : start]
+        )
+        if not opens or "verb_arranging" not in categories(word):
+            continue
+        rest = _CLAUSE_BREAK.split(instruction[end:], maxsplit=1)[0].lower().split()
+        if set(rest) <= _ARRANGED:
+            out.append(Unread(word, "action", ARRANGING_REASON))
+    return out
+
+
+_ARRANGED = frozenset("it them all up neatly nicely together please".split())
+
+EXCLAIMED_REASON = "an exclamation names a thing and asks nothing: say what to do with it"
+_SENTENCE = re.compile(r"[^.!?;]+!")
+_NO_THING = frozenset("too also next now then first last and please".split())
+
+
+def exclaimed_things(instruction: str) -> list[Unread]:
+    """A sentence ending in "!" that names a thing and, besides it, only words no list holds ("Carrot
+    time!", "Carrot duty!"): it asks no action, and read as a placing it would invent one. An additive or
+    order word ("The carrot too!", "Carrot next!") or a place ("Carrot on the plate!") asks one."""
+    out = []
+    for m in _SENTENCE.finditer(instruction):
+        text = m[0].strip(" !")
+        named = find_mentions(text)
+        if not named:
+            continue
+        words = [w for w, s, _ in tokens(text) if not any(x.char_start <= s < x.char_end for x in named)]
+        words = [w for w in words if w not in DETERMINERS]
+        if words and not set(words) & (_NO_THING | _PREPOSITIONS) and not any(map(categories, words)):
+            out.append(Unread(text, "action", EXCLAIMED_REASON))
     return out
