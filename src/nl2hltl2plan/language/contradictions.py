@@ -9,7 +9,8 @@ task. One check for every world and backend, where the leaf actions meet the con
 
 What a task requires: every action of its leaves (all leaves are required: an HTT orders tasks, it has
 no choice), the change of state its kind makes (`heat(Mug)` for a heat_place), and the opening of a
-receptacle that every instance of keeps closed at the start (a put into the fridge opens the fridge).
+receptacle, or of what holds the thing, that stays closed at the start for every instance (a put into
+the fridge opens the fridge, one into a dishwasher's rack the dishwasher).
 Only a ban never lifted is judged here; an until-guard waits for its task, which the planner orders.
 """
 
@@ -70,17 +71,26 @@ def _required(
         for text in spec:
             yield [text]
             if (opened := _opened(text, world)) is not None:
-                yield [opened]
+                yield opened
     if (verb := _KIND_STATE.get(task.kind)) is not None:
         yield [f"{verb}({sliced_type(t) if task.sliced else t})" for t in task.object]
 
 
-def _opened(text: str, world: World | None) -> str | None:
-    """`open(R)` when a put into R needs it: every R of the world is openable and starts closed."""
+def _opened(text: str, world: World | None) -> list[str] | None:
+    """The openings a step needs, any one of which will do: a put into R opens R when R is openable
+    and starts closed, or the closed thing R sits in (a dishwasher's rack); a pickup opens what its
+    thing sits in. None when some instance needs no opening."""
     atom = Atom.read(text)
-    if world is None or atom is None or atom.verb != "put" or len(atom.args) != 2:
+    if world is None or atom is None or atom.verb not in ("put", "pickup") or len(atom.args) < 1:
         return None
-    found = world.instances(atom.args[1])
-    if found and all(o.affordances.openable and not o.is_open for o in found):
-        return f"open({atom.args[1]})"
-    return None
+    into = atom.verb == "put" and len(atom.args) == 2
+    found = world.instances(atom.args[1] if into else atom.args[0])
+    opened = set()
+    for o in found:
+        if into and o.affordances.openable and not o.is_open:
+            opened.add(o.type)
+        elif (shut := world.closed_ancestor(o.id)) is not None:
+            opened.add(world.objects[shut].type)
+        else:
+            return None
+    return [f"open({t})" for t in sorted(opened)] or None
