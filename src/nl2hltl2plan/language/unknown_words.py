@@ -123,7 +123,8 @@ def unknown_verbs(instruction: str, toks: Tokens | None = None) -> list[Unread]:
         opens = i == 0 or toks[i - 1][0] in _COMMAND_START or _CLAUSE_BREAK.search(
             instruction[toks[i - 1][2] : start]
         )
-        if opens and toks[i + 1][0] in _OBJECT_START and _unknown_action(word):
+        closing = _closing_pronoun(instruction, toks, i)
+        if opens and toks[i + 1][0] in _OBJECT_START and _unknown_action(word, closing):
             out.append(Unread(word, "action", ACTION_REASON))
     for m in _LET.finditer(instruction.lower()):  # "and let it soak": the action after its thing
         verb = m["verb"] or m["verb2"]
@@ -139,12 +140,23 @@ _LET = re.compile(
 )
 
 
-def _unknown_action(word: str) -> bool:
+def _unknown_action(word: str, closing: bool = False) -> bool:
+    """`closing`: the command is only the word and "it"/"them" ("and label it."): there a word the lists
+    name only in a comment or as a category ("label") is no word they hold; elsewhere it is ("also the
+    mug", "give the watch a look": words the readers know though no list holds them)."""
     if len(word) < 3 or word in DETERMINERS | _PREPOSITIONS | _NO_ACTION:
         return False
     if word.endswith(("ly", "ing", "'s")):  # an adverb, a participle, a possessive
         return False
-    return not listed_word(word) and not categories(word) and english_word(word)
+    known = listed_word(word) if closing else known_word(word)
+    return not known and not categories(word) and english_word(word)
+
+
+def _closing_pronoun(instruction: str, toks: Tokens, i: int) -> bool:
+    """Is the word at i followed by "it"/"them" and then the end of its clause?"""
+    if toks[i + 1][0] not in ("it", "them"):
+        return False
+    return i + 2 == len(toks) or bool(_CLAUSE_BREAK.search(instruction[toks[i + 1][2] : toks[i + 2][1]]))
 
 
 # what is acted on after these words: a placing or treating verb, or the preposition of a destination
