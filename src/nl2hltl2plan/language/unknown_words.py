@@ -516,7 +516,7 @@ def exclaimed_things(instruction: str) -> list[Unread]:
     out = []
     for m in _SENTENCE.finditer(instruction):
         text = m[0].strip(" !")
-        named = find_mentions(text)
+        named = [x for x in find_mentions(text) if not x.entry.generic]  # "Sure thing!" names nothing
         if not named:
             continue
         words = [w for w, s, _ in tokens(text) if not any(x.char_start <= s < x.char_end for x in named)]
