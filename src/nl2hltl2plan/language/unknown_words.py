@@ -68,6 +68,7 @@ from __future__ import annotations
 
 import re
 from functools import cache
+from importlib import resources
 
 from nl2hltl2plan.language.content_words import (
     COMMAND_WORDS,
@@ -486,7 +487,7 @@ ARRANGING_REASON = "no base task lays things together: say where each thing goes
 
 
 def placeless_arrangements(instruction: str, toks: Tokens) -> list[Unread]:
-    """A command in an arranging verb ("verb_arranging": stack, arrange, serve) with nothing after it but
+    """A command in an arranging verb (`arranging_verbs.txt`: stack, arrange, serve) with nothing after it but
     "it"/"them" before its clause ends ("Then stack them.", "Then serve."): no place and no thing of its
     own, it asks how things lie together, which no base task does (read as nothing, it was dropped)."""
     out = []
@@ -494,15 +495,23 @@ def placeless_arrangements(instruction: str, toks: Tokens) -> list[Unread]:
         opens = i == 0 or toks[i - 1][0] in _COMMAND_START or _CLAUSE_BREAK.search(
             instruction[toks[i - 1][2] : start]
         )
-        if not opens or "verb_arranging" not in categories(word):
+        if not opens or word not in _arranging_verbs():
             continue
-        rest = _CLAUSE_BREAK.split(instruction[end:], maxsplit=1)[0].lower().split()
-        if set(rest) <= _ARRANGED:
+        rest = _CLAUSE_BREAK.split(instruction[end:], maxsplit=1)[0]
+        # "Arrange, in any order: ...": a list follows, the places in it
+        stop = instruction[end + len(rest) : end + len(rest) + 1]
+        if set(rest.lower().split()) <= _ARRANGED and stop in ("", ".", "!", "?", ";"):
             out.append(Unread(word, "action", ARRANGING_REASON))
     return out
 
 
 _ARRANGED = frozenset("it them all up neatly nicely together please".split())
+
+
+@cache
+def _arranging_verbs() -> frozenset[str]:
+    text = resources.files("nl2hltl2plan.language").joinpath("arranging_verbs.txt").read_text()
+    return frozenset(w for ln in text.splitlines() if not ln.startswith("#") for w in ln.split())
 
 EXCLAIMED_REASON = "an exclamation names a thing and asks nothing: say what to do with it"
 _SENTENCE = re.compile(r"[^.!?;]+!")
