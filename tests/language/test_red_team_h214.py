@@ -57,8 +57,9 @@ def test_a_treatment_not_to_do_is_a_ban(text, ban):
 
 @pytest.mark.data
 def test_a_treatment_not_to_do_after_that_treatment_stays_refused():
-    _, _, unread, _ = read("Wash the mug and put it in the cabinet without washing it")
-    assert any("'without'" in u for u in unread), unread
+    # refused as a contradiction at the spec since h255 (was: the ban left unread by a special case)
+    with pytest.raises(HTTError, match="'without washing it' forbids clean\\(Mug\\), which the task 'Wash"):
+        read("Wash the mug and put it in the cabinet without washing it")
 
 
 @pytest.mark.data

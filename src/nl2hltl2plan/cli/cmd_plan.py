@@ -5,7 +5,8 @@ Prints the HTT, the base tasks, the hierarchical LTL and the plan with its trave
 time; `--json` prints one object (docs/plan_schema.md); `-o DIR` writes result.json, spec.json,
 spec.hoa and the pictures htt, world, plan (the map with numbered actions) and gantt (who does what
 when), each as .png and .svg.
-Exit status: 0 a checked plan, 1 no plan (infeasible or timeout, with the reason), 2 bad input,
+Exit status: 0 a checked plan, 1 no plan (infeasible or timeout, with the reason), 2 bad input
+(a constraint that forbids what a task requires: "the instruction contradicts itself: ..."),
 3 LLM requests pending (batch mode), 4 an internal error (a bug). Without `--llm`, an LLM configured
 by NL2HLTL2PLAN_LLM_* is used, else the offline backend (said on stderr).
 """

@@ -238,8 +238,6 @@ def _read_clause(
         if contrast is not None:  # "put the tomato in the fridge, not the microwave"
             return _negation(text, toks, i, end_tok, end_tok, "put", *contrast)
     if verb in _DONE_TO_IT and not inside and j + 1 < cut and words[j + 1] in ("it", "them"):
-        if any(_verb_of(w) == verb for w in words[:i]):  # "wash the mug ... without washing it": asked, then
-            return None  # banned: which one is meant? (left unread, so refused by name)
         inside = []  # "put the apple in the fridge, don't heat it": the pronoun alone names the thing
     elif verb is None or not inside:
         return None

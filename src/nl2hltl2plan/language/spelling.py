@@ -95,6 +95,21 @@ def _name_words() -> tuple[str, ...]:
     return tuple(sorted(w for w in words if len(w) >= 4))
 
 
+def listed_word(word: str) -> bool:
+    """Whether the lexicon or a word list holds `word` (lower case) as an entry: the words of the lists'
+    comments and their category names ("label:") are not held ("and label it" is a verb no list has)."""
+    return word in _listed_words()
+
+
+@cache
+def _listed_words() -> frozenset[str]:
+    listed = (resources.files("nl2hltl2plan.language").joinpath(f).read_text() for f in _WORD_LISTS)
+    lines = (ln.split(":", 1)[-1] for t in listed for ln in t.lower().splitlines() if ln.strip()[:1] != "#")
+    words = {w for ln in lines for w in re.findall(r"[a-z]+", ln)}
+    words |= courtesy_words("greeting") | courtesy_words("address")
+    return frozenset(w for key in lexicon() for w in key) | words
+
+
 @cache
 def _known_words() -> frozenset[str]:
     """Every word the lexicon knows in any form (plurals included), and every word of the project's word

@@ -30,6 +30,7 @@ from nl2hltl2plan.domain.task_kinds import SLOTS, State
 from nl2hltl2plan.errors import HTTError, LLMError, WorldError
 from nl2hltl2plan.language.accounting import account, unfilled_slots
 from nl2hltl2plan.language.content_words import refuse_take_backs
+from nl2hltl2plan.language.contradictions import refuse_contradictions
 from nl2hltl2plan.language.counts import take_every_instance
 from nl2hltl2plan.language.courtesy import without_courtesy
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
@@ -265,6 +266,9 @@ def _finish(
     mode = actions if actions != "auto" else ("recipe" if backend in PARSERS else "llm")
     found = ACTION_SOURCES[mode](res, world, client)
     leaf_specs = res.leaf_specs if found is None else found
+    # "put the apple in the fridge but never open the fridge": the text, not the world, says no (exit 2)
+    world_ = world if isinstance(world, World) else None
+    refuse_contradictions(res.tasks, res.constraint_specs, leaf_specs, res.leaf_task, world_)
     htt = res.htt.model_copy(deep=True)
     for n in htt.nodes:
         spec = leaf_specs.get(n.id)

@@ -68,6 +68,7 @@ from __future__ import annotations
 
 import re
 from functools import cache
+from importlib import resources
 
 from nl2hltl2plan.language.content_words import (
     COMMAND_WORDS,
@@ -87,6 +88,7 @@ from nl2hltl2plan.language.spelling import (
     english_frequency,
     english_word,
     known_word,
+    listed_word,
     one_edit,
     structure_word,
     vocabulary_near,
@@ -122,7 +124,8 @@ def unknown_verbs(instruction: str, toks: Tokens | None = None) -> list[Unread]:
         opens = i == 0 or toks[i - 1][0] in _COMMAND_START or _CLAUSE_BREAK.search(
             instruction[toks[i - 1][2] : start]
         )
-        if opens and toks[i + 1][0] in _OBJECT_START and _unknown_action(word):
+        closing = _closing_pronoun(instruction, toks, i)
+        if opens and toks[i + 1][0] in _OBJECT_START and _unknown_action(word, closing):
             out.append(Unread(word, "action", ACTION_REASON))
     for m in _LET.finditer(instruction.lower()):  # "and let it soak": the action after its thing
         verb = m["verb"] or m["verb2"]
@@ -138,12 +141,23 @@ _LET = re.compile(
 )
 
 
-def _unknown_action(word: str) -> bool:
+def _unknown_action(word: str, closing: bool = False) -> bool:
+    """`closing`: the command is only the word and "it"/"them" ("and label it."): there a word the lists
+    name only in a comment or as a category ("label") is no word they hold; elsewhere it is ("also the
+    mug", "give the watch a look": words the readers know though no list holds them)."""
     if len(word) < 3 or word in DETERMINERS | _PREPOSITIONS | _NO_ACTION:
         return False
     if word.endswith(("ly", "ing", "'s")):  # an adverb, a participle, a possessive
         return False
-    return not known_word(word) and not categories(word) and english_word(word)
+    known = listed_word(word) if closing else known_word(word)
+    return not known and not categories(word) and english_word(word)
+
+
+def _closing_pronoun(instruction: str, toks: Tokens, i: int) -> bool:
+    """Is the word at i followed by "it"/"them" and then the end of its clause?"""
+    if toks[i + 1][0] not in ("it", "them"):
+        return False
+    return i + 2 == len(toks) or bool(_CLAUSE_BREAK.search(instruction[toks[i + 1][2] : toks[i + 2][1]]))
 
 
 # what is acted on after these words: a placing or treating verb, or the preposition of a destination
@@ -420,7 +434,8 @@ def unread_words(instruction: str, toks: Tokens | None = None) -> list[Unread]:
     """Unknown verbs, things and modifiers, and misspelt order words, in that order (check 1's unknown
     words)."""
     toks = tokens(instruction) if toks is None else toks
-    unknown = unknown_verbs(instruction, toks) + unknown_things(instruction, toks)
+    unknown = unknown_verbs(instruction, toks) + placeless_arrangements(instruction, toks)
+    unknown += exclaimed_things(instruction) + unknown_things(instruction, toks)
     unknown += unknown_modifiers(instruction, toks) + done_already(instruction)
     order = misspelt_order_words(instruction)
     return unknown + order + misspelt_words(instruction, {u.words for u in order})
@@ -465,4 +480,56 @@ def misspelt_words(instruction: str, named: set[str] | frozenset[str] = frozense
         if any(map(structure_word, near)) and low not in named and low not in {u.words for u in out}:
             said = " or ".join(filter(None, [", ".join(map(repr, near[:-1])), repr(near[-1])]))
             out.append(Unread(low, "spelling", f"may misspell {said}: say it as you mean it"))
+    return out
+
+
+ARRANGING_REASON = "no base task lays things together: say where each thing goes"
+
+
+def placeless_arrangements(instruction: str, toks: Tokens) -> list[Unread]:
+    """A command in an arranging verb (`arranging_verbs.txt`: stack, arrange, serve) with nothing after it but
+    "it"/"them" before its clause ends ("Then stack them.", "Then serve."): no place and no thing of its
+    own, it asks how things lie together, which no base task does (read as nothing, it was dropped)."""
+    out = []
+    for i, (word, start, end) in enumerate(toks):
+        opens = i == 0 or toks[i - 1][0] in _COMMAND_START or _CLAUSE_BREAK.search(
+            instruction[toks[i - 1][2] : start]
+        )
+        if not opens or word not in _arranging_verbs():
+            continue
+        rest = _CLAUSE_BREAK.split(instruction[end:], maxsplit=1)[0]
+        # "Arrange, in any order: ...": a list follows, the places in it
+        stop = instruction[end + len(rest) : end + len(rest) + 1]
+        if set(rest.lower().split()) <= _ARRANGED and stop in ("", ".", "!", "?", ";"):
+            out.append(Unread(word, "action", ARRANGING_REASON))
+    return out
+
+
+_ARRANGED = frozenset("it them all up neatly nicely together please".split())
+
+
+@cache
+def _arranging_verbs() -> frozenset[str]:
+    text = resources.files("nl2hltl2plan.language").joinpath("arranging_verbs.txt").read_text()
+    return frozenset(w for ln in text.splitlines() if not ln.startswith("#") for w in ln.split())
+
+EXCLAIMED_REASON = "an exclamation names a thing and asks nothing: say what to do with it"
+_SENTENCE = re.compile(r"[^.!?;]+!")
+_NO_THING = frozenset("too also next now then first last and please".split())
+
+
+def exclaimed_things(instruction: str) -> list[Unread]:
+    """A sentence ending in "!" that names a thing and, besides it, only words no list holds ("Carrot
+    time!", "Carrot duty!"): it asks no action, and read as a placing it would invent one. An additive or
+    order word ("The carrot too!", "Carrot next!") or a place ("Carrot on the plate!") asks one."""
+    out = []
+    for m in _SENTENCE.finditer(instruction):
+        text = m[0].strip(" !")
+        named = [x for x in find_mentions(text) if not x.entry.generic]  # "Sure thing!" names nothing
+        if not named:
+            continue
+        words = [w for w, s, _ in tokens(text) if not any(x.char_start <= s < x.char_end for x in named)]
+        words = [w for w in words if w not in DETERMINERS]
+        if words and not set(words) & (_NO_THING | _PREPOSITIONS) and not any(map(categories, words)):
+            out.append(Unread(text, "action", EXCLAIMED_REASON))
     return out
