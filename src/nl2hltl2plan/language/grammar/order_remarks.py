@@ -229,6 +229,6 @@ def _remark_opens(sentence: str) -> str:
 
     named = _ITS_THING.sub(of_thing, m["clause"], count=1)
     if named == m["clause"] and re.search(r"\b(?:it|them)\b", named, re.I):
-        return sentence  # "Start with the fridge: put the egg in it": "it" is the remark's thing, kept with it
+        return sentence  # "Start with the fridge: put the egg in it": its "it" is the remark's thing
     return f"{m['lead']}{named}. {thing} {kind}{m['end'] or '.'}"
 
