@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
+from itertools import pairwise
 from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import LOCATIVE, OBJECT_START, word_categories
@@ -63,23 +64,30 @@ def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool 
 
 # "is" after the subject of a remark, "'s" as the reader spaces it ("smoker s lit")
 _COPULA = frozenset("s is are was were".split())
+_DETERMINERS = frozenset("the a an our my".split())
 
 
 def _remark_subject(words: tuple[str, ...], k: int) -> bool:
     """Whether `words[k]` is the subject of a remark on the scene, or its "is" / "'s": a noun opening the
     fragment (after a determiner at most) before "is" / "'s" and what is said of it ("Smoker's lit", "The
-    furnace is hot", "Clay's wedged and ready"; h263). A remark names no thing to move; a command on a
-    noun ("Smash that like button") and a noun alone ("Zebra.") stay refused."""
-    at = 1 if words and words[0] in ("the", "a", "an", "our", "my", "this") else 0
+    furnace is hot", "Clay's wedged and ready"; "That's the map", all its words; h263). A remark names
+    no thing to move; a command on a noun ("Smash that like button") and a noun alone ("Zebra.") stay
+    refused."""
+    pointed = len(words) > 2 and words[0] in ("that", "this") and words[1] in _COPULA  # "That's the map."
+    if pointed and words[2] in _DETERMINERS:
+        return True
+    at = 1 if words and words[0] in _DETERMINERS | {"this"} else 0
     if k == at + 1 and words[k] in _COPULA:
         return _remark_subject(words, at)
-    return k == at and k + 2 < len(words) and words[k + 1] in _COPULA and "NOUN" in english_lemmas(american(words[k]))
+    subject = k == at and k + 2 < len(words) and words[k + 1] in _COPULA
+    return subject and "NOUN" in english_lemmas(american(words[k]))
 
 
 @lru_cache(maxsize=1)
 def _counts() -> dict[str, int]:
     words = word_categories("content_words.txt")
-    return {w: int(name[len("count_") :]) for name, ws in words.items() if name.startswith("count_") for w in ws}
+    counts = {name.removeprefix("count_"): ws for name, ws in words.items() if name.startswith("count_")}
+    return {w: int(value) for value, ws in counts.items() for w in ws}
 
 
 def count_in(text: str) -> bool:
@@ -89,7 +97,7 @@ def count_in(text: str) -> bool:
     said = text.split()
     said = said[1:] if said[:1] == ["and"] else said
     values = [_counts().get(w, int(w) if w.isdigit() else -1) for w in said]
-    return len(values) >= 3 and min(values) >= 0 and all(b == a + 1 for a, b in zip(values, values[1:]))
+    return len(values) >= 3 and min(values) >= 0 and all(b == a + 1 for a, b in pairwise(values))
 
 
 def _after_my(before: tuple[str, ...]) -> bool:

@@ -585,4 +585,4 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
 )
 
 # compiled once: with the reader's other tables they are more than `re`'s cache holds
-REGISTERS = REQUIREMENTS + VOICED + tuple((re.compile(pattern), replacement) for pattern, replacement in _RULES)
+REGISTERS = REQUIREMENTS + VOICED + tuple((re.compile(pat), replacement) for pat, replacement in _RULES)

@@ -52,7 +52,7 @@ _RULES: tuple[tuple[str, str], ...] = (
         r"\1 all \2 is done",
     ),
     # an exchange said of where the blocks rest
-    (rf"\b(where\s+{_BLOCK}\s+and\s+{_BLOCK}\s+(?:are|were))\s+{_REST}\b(?:\s+(?:now|at\s+the\s+moment))?", r"\1"),
+    (rf"\b(where\s+{_BLOCK}\s+and\s+{_BLOCK}\s+(?:are|were))\s+{_REST}\b(?:\s+(?:now|at\s+present))?", r"\1"),
     (
         r"\b(trade|swap|switch|exchange)\s+(?:the\s+)?(spots|places|positions|locations)\s+(?:that\s+)?they\s*"
         rf"(?:'\s*re|re|\s+are)\s+(?:{_REST}\s+)?(?:on|in|at)\b",
