@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
+from itertools import pairwise
 from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import LOCATIVE, OBJECT_START, word_categories
@@ -44,6 +45,8 @@ def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool 
     word = american(words[k])  # a British spelling is English: "marvellous", "colour"
     if word in _keeps() or word.isdigit() or not english_word(word):
         return False
+    if _remark_subject(words, k):
+        return True
     vocative = (set_off or address) and _after_my(words[:k])
     if any(w in _THING_BEFORE for w in words[:k]) and not vocative:
         return False
@@ -57,6 +60,44 @@ def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool 
         not kinds and word.endswith("s") and english_word(word[:-1])
     )
     return address or (set_off and (group or vocative))
+
+
+# "is" after the subject of a remark, "'s" as the reader spaces it ("smoker s lit")
+_COPULA = frozenset("s is are was were".split())
+_DETERMINERS = frozenset("the a an our my".split())
+
+
+def _remark_subject(words: tuple[str, ...], k: int) -> bool:
+    """Whether `words[k]` is the subject of a remark on the scene, or its "is" / "'s": a noun opening the
+    fragment (after a determiner at most) before "is" / "'s" and what is said of it ("Smoker's lit", "The
+    furnace is hot", "Clay's wedged and ready"; "That's the map", all its words; h263). A remark names
+    no thing to move; a command on a noun ("Smash that like button") and a noun alone ("Zebra.") stay
+    refused."""
+    pointed = len(words) > 2 and words[0] in ("that", "this") and words[1] in _COPULA  # "That's the map."
+    if pointed and words[2] in _DETERMINERS:
+        return True
+    at = 1 if words and words[0] in _DETERMINERS | {"this"} else 0
+    if k == at + 1 and words[k] in _COPULA:
+        return _remark_subject(words, at)
+    subject = k == at and k + 2 < len(words) and words[k + 1] in _COPULA
+    return subject and "NOUN" in english_lemmas(american(words[k]))
+
+
+@lru_cache(maxsize=1)
+def _counts() -> dict[str, int]:
+    words = word_categories("content_words.txt")
+    counts = {name.removeprefix("count_"): ws for name, ws in words.items() if name.startswith("count_")}
+    return {w: int(value) for value, ws in counts.items() for w in ws}
+
+
+def count_in(text: str) -> bool:
+    """Whether a whole sentence (lower case, words only) is a count-in: three or more numbers said one
+    after another, up by one ("And five, six, seven, eight!", "one two three"; h263); it gives a beat,
+    never a count of things."""
+    said = text.split()
+    said = said[1:] if said[:1] == ["and"] else said
+    values = [_counts().get(w, int(w) if w.isdigit() else -1) for w in said]
+    return len(values) >= 3 and min(values) >= 0 and all(b == a + 1 for a, b in pairwise(values))
 
 
 def _after_my(before: tuple[str, ...]) -> bool:

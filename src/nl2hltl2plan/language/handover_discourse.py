@@ -55,7 +55,7 @@ from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import vocabulary, word_categories
 from nl2hltl2plan.language.courtesy import courtesy_pattern, courtesy_words
-from nl2hltl2plan.language.frame_filler import PART_BREAK, PART_END, Dropped, filler, parts_of
+from nl2hltl2plan.language.frame_filler import PART_BREAK, PART_END, Dropped, count_in, filler, parts_of
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
 
@@ -171,7 +171,7 @@ def empty(
     text = re.sub(r"#\s*\d+\b", " ", fragment.lower().replace("’", "'"))  # "#212": a ticket's number
     marked = re.findall(r"[a-z0-9#]+", PART_BREAK.sub(f" {PART_END} ", text))  # each part's end marked
     text = " ".join(re.sub(r"[^a-z0-9#]+", " ", text).split())
-    if whole and text in frame.alone:
+    if whole and (text in frame.alone or (general and count_in(text))):
         return True
     text = frame.opening.sub(" ", text)
     if header:

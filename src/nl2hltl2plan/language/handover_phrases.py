@@ -291,6 +291,10 @@ def _mark_one_per_region(m: Marked) -> None:
         rf"(?:one|a\s+single|1)(?:\s+{NOUN})?\s+(?:in|on|per)\s+(?:any|a|each|every)\s+(?:single\s+)?{region}\b",
         rf"\b(?:with\s+)?(?:one|a\s+single|1)(?:\s+{NOUN})?\s+(?:max(?:imum)?|at\s+most|tops)\s+"
         rf"(?:per|(?:in|on)\s+(?:any|a|each|every))\s+{region}\b",
+        # the way a block rests, after its count ("no more than one block resting on any of those regions",
+        # "one block fitted to each region", "one resting on each")
+        rf"\b(?:with\s+)?{one}\s+(?:resting|sitting|lying|standing|fitted|set|placed)\s+(?:on|in|onto|into|to)\s+"
+        rf"(?:any|each|every|a)(?:\s+(?:one|single))?(?:\s+of\s+(?:the|these|those|them))?(?:\s+{region}s?)?(?=\s*(?:$|[,.;]|and\b))",
         # "only one block may occupy a region": any region, so each
         rf"\b(?:only|at\s+most|no\s+more\s+than)\s+(?:one|a\s+single|1)\s+{NOUN}\s+(?:may|can|is\s+allowed\s+to|should|will)\s+"
         rf"(?:occupy|fit\s+(?:in|on|into)|go\s+(?:in|on|into)|be\s+(?:placed\s+)?(?:in|on))\s+(?:a|any|each|every)\s+"

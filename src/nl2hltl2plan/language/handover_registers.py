@@ -62,6 +62,7 @@ from collections.abc import Callable
 
 from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.handover_requirements import REQUIREMENTS
+from nl2hltl2plan.language.handover_voices import VOICED
 from nl2hltl2plan.language.handover_words import GERUND_VERBS, NEGATED_GERUNDS, SWAP, VERB
 
 _BLOCK = r"(?:the\s+)?(?:red|blue|yellow)(?:\s+(?:block|one|cube))?"
@@ -584,4 +585,4 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
 )
 
 # compiled once: with the reader's other tables they are more than `re`'s cache holds
-REGISTERS = REQUIREMENTS + tuple((re.compile(pattern), replacement) for pattern, replacement in _RULES)
+REGISTERS = REQUIREMENTS + VOICED + tuple((re.compile(pat), replacement) for pat, replacement in _RULES)

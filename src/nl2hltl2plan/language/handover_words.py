@@ -45,7 +45,8 @@ DROP = (
 # "during this period": a prohibition's scope, the goals of its sentence (else all goals so far); legal
 # English says "during such period", "during said period"
 PERIOD_WORDS = (
-    r"(?:(?:during|in)\s+(?:this|that|such|(?:the\s+)?said|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time)|in\s+the\s+meantime|meanwhile|"
+    r"(?:(?:during|in)\s+(?:this|that|such|(?:the\s+)?said|the\s+same)\s+(?:whole\s+|entire\s+)?(?:period|time|stretch|spell)|"
+    r"for\s+(?:this|that|the)\s+(?:whole|entire)\s+(?:period|time|stretch|spell)|in\s+the\s+meantime|meanwhile|"
     r"while\s+doing\s+(?:so|this|that|it)|while\s+(?:this|that)\s+(?:happens|is\s+happening|goes\s+on|is\s+going\s+on)|"
     r"during\s+(?:all\s+)?(?:this|that)(?=\s*(?:$|,|;))|at\s+the\s+same\s+time|"
     r"in\s+the\s+process|all\s+the\s+while|the\s+whole\s+time|in\s+the\s+interim|"
@@ -147,5 +148,5 @@ NEGATED_GERUNDS = {
 SET_OFF_FOR = r"\b(?:sets?|setting|heads?|heading)\s+off\s+(?:for|towards?)\b"
 WAY_IDIOM = (
     r"\b(?:(?:makes?|making|made|finds?|finding|found|wends?|wending)\s+(?:its|their)\s+way|heads?|heading|"
-    r"moseys?|moseying)(?:\s+(?:on|over|off|along))*\s+(?=(?:back\s+)?(?:to|towards?|into|onto)\b)"
+    r"moseys?|moseying|cross(?:es)?|crossing)(?:\s+(?:on|over|off|along|across))*\s+(?=(?:back\s+)?(?:to|towards?|into|onto)\b)"
 )
