@@ -1,7 +1,9 @@
 """Issue 23 (h264, red team of session 32's household rules): a treatment said in the passive with what
 tells that its state is already so or someone else's job ("should be washed already", "gets washed by
 someone else", `states_said.txt`) is no duty for the robots, and a cut said only as the state a thing ends
-in ("..., halved") is a slicing word that the reading must use or refuse, never frame dropped at exit 0."""
+in ("..., halved") is a slicing word that the reading must use or refuse, never frame dropped at exit 0; a
+wait on a thing that only the clause's own task names as its place ("once the bed is sorted, put the pillow
+on it") is unread, not dropped."""
 
 from __future__ import annotations
 
@@ -47,3 +49,10 @@ def kitchen():
 )  # fmt: skip
 def test_read_in_a_kitchen(kitchen, text, read):
     assert outcome(text, kitchen) == read
+
+
+@pytest.mark.data
+def test_a_wait_on_the_own_task_place_is_unread(kitchen):
+    # "sorted" read as done (h254) about the task's own place, which no task moves: a wait, never dropped
+    assert outcome("Once the table is sorted, put the apple on it.", kitchen) == "partial"
+    assert outcome("Once the apple is sorted, put it on the table.", kitchen) == ["place Apple -> DiningTable"]
