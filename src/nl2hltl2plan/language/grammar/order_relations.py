@@ -449,8 +449,8 @@ def _ref_edges(after: bool, ref: str, u: Unit, tasks: Tasks, b: TaskBuilder, tex
     if not targets and own and all(t in u.tasks for t in own):
         if again := restated_own_tasks(ref, b, text):
             _add_ref_tasks(again, after, u, tasks, edges)
-        else:
-            self_state(ref, [specs[t] for t in u.tasks])
+        else:  # a state of the task itself, or (its place said done) unread
+            self_state(ref, [specs[t] for t in u.tasks], b, [nps[t] for t in u.tasks])
         return
     targets = [t for t in targets if t not in u.tasks]
     for t in targets:

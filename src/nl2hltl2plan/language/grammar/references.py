@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 
 from nl2hltl2plan.domain.task_kinds import APPLIANCE, Kind
 from nl2hltl2plan.language.grammar import word_tables as G
@@ -304,15 +305,24 @@ _STATE_KINDS: dict[str, Kind] = {
 }
 
 
-def self_state(ref: str, specs: list[BaseTaskSpec]) -> None:
+def self_state(
+    ref: str, specs: list[BaseTaskSpec], b: TaskBuilder | None = None, nps: Sequence[NP | None] = ()
+) -> None:
     """ "After refrigerating the pan, pick up a pan ... and put it on the table": the reference is a state
-    change of the task itself, not an order."""
+    change of the task itself, not an order. "Once the bed is sorted, put the pillow on it" (h254's "sorted"
+    read as done) names the task only by its place, a thing of no task said done: unread (h264)."""
     words = _treatment_words(ref)
     cls = G.VERBS.get(words[0], ("", ""))[0] if words else ""
     kind = _STATE_KINDS.get(cls)
+    done = _PLACE_DONE.fullmatch(ref.strip())
+    if b is not None and not kind and done and parse_np(done["np"]).key not in {n.key for n in nps if n}:
+        b.unparsed.append(f"could not tell which task {ref!r} refers to ({NOT_CERTAIN}: no task moves it)")
     for s in specs:
         if kind and s.kind in {"place", "place_two"} and s.count == 1:
             s.kind = kind
+
+
+_PLACE_DONE = re.compile(r"(?:the|that|this|your|my)\s+(?P<np>[a-z ]+?)\s+(?:is|are)\s+done", re.I)
 
 
 def treats_own(ref: str) -> bool:

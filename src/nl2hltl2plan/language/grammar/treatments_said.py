@@ -34,6 +34,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.grammar.frames import APPLIANCE_OF
 from nl2hltl2plan.language.grammar.treated_lists import treated_lists
@@ -248,7 +249,7 @@ def _put_pronoun(m: re.Match[str]) -> str:
 def _imperative(m: re.Match[str]) -> str:
     forms = m.groupdict()
     verb = _base(forms.get("noun") or forms.get("part") or forms.get("ger") or forms.get("duty") or "")
-    if verb is None or not _names_thing(m["thing"]):
+    if verb is None or not _names_thing(m["thing"]) or _state_said(m):
         return m[0]
     thing = re.sub(r"^(?:that|this|my|your)\b", "the", m["thing"], flags=re.I)
     adv = forms.get("adv") or forms.get("back")
@@ -256,6 +257,18 @@ def _imperative(m: re.Match[str]) -> str:
     if forms.get("goes_to"):  # "needs chilling (too), then back on the": the place after it
         placed = f"{forms.get('too') or ''} and put it{' ' + adv if adv else ''}"
     return f"{m['lead']}{verb} {thing}{placed}"
+
+
+def _state_said(m: re.Match[str]) -> bool:
+    """Whether the treatment's word is followed by what says its state is already so or someone else's job
+    ("should be washed already", "gets washed by someone else": `states_said.txt`, h264): no duty."""
+    said = max(m.end(g) for g in ("noun", "part", "ger", "duty") if m.groupdict().get(g))
+    return _STATE_SAID.match(m.string, said) is not None
+
+
+_STATE_SAID = re.compile(
+    rf"{_PARTICLE}\s*,?\s+{phrase_list_pattern('states_said.txt', 'done')}(?![\w'])", re.I
+)
 
 
 def _uninverted(m: re.Match[str]) -> str:
