@@ -239,7 +239,10 @@ _THING_SIGN_OFF = re.compile(
 
 
 # "Thanks for putting the egg in the fridge": done already, or thanks in advance? no reading can tell (h208)
-_THANKED_FOR = re.compile(r"\b(?:thanks|thank\s+you|cheers)\s+(?:so\s+much\s+)?for\s+[a-z]+ing\b", re.I)
+# ("Thank you for helping": help in general, no step said done)
+_THANKED_FOR = re.compile(
+    r"\b(?:thanks|thank\s+you|cheers)\s+(?:so\s+much\s+)?for\s+(?!help)[a-z]+ing\b", re.I
+)
 
 
 def thanked_for(text: str) -> list[str]:
