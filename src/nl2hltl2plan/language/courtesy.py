@@ -186,7 +186,8 @@ _OPENS = r"(?P<lead>^|(?<=[.!?])\s+)"
 # ("Robot: ...") may be a speaker's label in a dialogue, which the household grammar alone drops
 _GREETING = re.compile(
     rf"{_OPENS}(?:{courtesy_pattern('spoken_opener')}\s*,?\s*)*"
-    rf"(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+[!.,]+\s*(?=\w)",
+    rf"(?:{courtesy_pattern('greeting', 'address', 'greeting_with')}\s*)+"
+    rf"(?:{courtesy_pattern('endearment')}\s*)?[!.,]+\s*(?=\w)",  # "Hi sweetheart," (h261)
     re.I,
 )
 # a note's heading, the one pattern of it: "Note:", "A message for the robot:" (an address; `without_call`
@@ -210,10 +211,23 @@ _CALLED = re.compile(
     re.I,
 )
 _REPLY = re.compile(rf"{_OPENS}{courtesy_pattern('reply')}\s*[!.,]+\s*(?=\w)", re.I)
-_THANKS = re.compile(rf"(?<=[.!?])\s*{courtesy_pattern('closing')}\s*[!.]*\s*$", re.IGNORECASE)
+# closing thanks and farewells, one or more, where the text ends ("Thanks!", "Love you, bye.", "Over.")
+_THANKS = re.compile(
+    rf"(?<=[.!?])(?:\s*{courtesy_pattern('closing', 'farewell')}\s*[!.,]*)+\s*$", re.IGNORECASE
+)
+# a recorded message's opening ("Voicemail:", "Message after the beep:") and a radio call ("Kitchen unit, do
+# you read?", "Base to kitchen unit, come in."), each at a sentence's start: they ask for no task (h261)
+_CALL_OPENING = re.compile(
+    rf"{_OPENS}(?:{courtesy_pattern('voicemail')}\s*(?::|[!.](?=\s)|\s[-\u2013\u2014]+)|"
+    rf"{courtesy_pattern('radio_to')}\s*,?\s*{courtesy_pattern('radio_ask')}\s*[?.!]+)\s*(?=\w)",
+    re.I,
+)
 # a note's heading naming who it is for ("Note for Sam:", "Note for whoever's home first:"), `_NOTE_HEADING`
 _NOTE_FOR = re.compile(rf"{_OPENS}{_NOTE_HEADING}(?=\S)", re.I)
-_SIGN_OFF = re.compile(rf"(?<=[.!?])\s*(?i:{courtesy_pattern('sign_off')})\s*,\s*(?P<name>[A-Z][a-z]+)\W*$")
+# (a name may come with a title: "Fondly, Aunt Jo")
+_SIGN_OFF = re.compile(
+    rf"(?<=[.!?])\s*(?i:{courtesy_pattern('sign_off')})\s*,\s*(?P<name>[A-Z][a-z]+(?:\s+[A-Z][a-z]+)?)\W*$"
+)
 
 
 # a closing thanks or sign-off before a lone name that is also a thing ("Cheers, Mug", "Thanks! - Bread",
@@ -225,7 +239,10 @@ _THING_SIGN_OFF = re.compile(
 
 
 # "Thanks for putting the egg in the fridge": done already, or thanks in advance? no reading can tell (h208)
-_THANKED_FOR = re.compile(r"\b(?:thanks|thank\s+you|cheers)\s+(?:so\s+much\s+)?for\s+[a-z]+ing\b", re.I)
+# ("Thank you for helping": help in general, no step said done)
+_THANKED_FOR = re.compile(
+    r"\b(?:thanks|thank\s+you|cheers)\s+(?:so\s+much\s+)?for\s+(?!help)[a-z]+ing\b", re.I
+)
 
 
 def thanked_for(text: str) -> list[str]:
@@ -273,6 +290,7 @@ def greeted(text: str, names_a_thing: Callable[[str], bool]) -> Greeted:
     while opened != text:  # "Hi! Sure thing! ..."
         opened = text
         text = _REPLY.sub(lambda m: m["lead"], _GREETING.sub(lambda m: m["lead"], text))
+        text = _CALL_OPENING.sub(lambda m: m["lead"], text)
     text = _NOTE_FOR.sub(lambda m: m["lead"] if _for_someone(m, names_a_thing) else m[0], text)
     sign_off = _SIGN_OFF.search(text)
     if sign_off and not names_a_thing(sign_off["name"]):
@@ -353,6 +371,10 @@ _ADDRESSED = re.compile(
 )
 _TAGGED = re.compile(rf"\s*,\s*{courtesy_pattern('tag')}\s*(?P<end>[.!?]+|$)(?=\s|$)", re.I)
 _ASIDE_SENTENCE = re.compile(rf"{_OPENS}{courtesy_pattern('aside')}\s*[?.!:]+\s*(?=\w)", re.I)
+# an apology for the message or the asking opening a sentence ("Sorry to bother you again!", h261)
+_APOLOGY = re.compile(
+    rf"{_OPENS}{courtesy_pattern('apology')}\s*(?:[?.!:]+|\s[-\u2013\u2014]+)\s*(?=\w)", re.I
+)
 
 
 def without_framing(text: str) -> str:
@@ -375,7 +397,7 @@ def without_framing(text: str) -> str:
     """
     text = _TAGGED.sub(lambda m: "." if m["end"] else "", text)
     # an address again after the others ("P.S. Sweetie, ...", "Love, ok so first ...")
-    for framing in (_ADDRESSED, _RELAYED, _POSTSCRIPT, _ASIDE_SENTENCE, _UNHURRIED, _ADDRESSED):
+    for framing in (_ADDRESSED, _APOLOGY, _RELAYED, _POSTSCRIPT, _ASIDE_SENTENCE, _UNHURRIED, _ADDRESSED):
         text = framing.sub(lambda m: m["lead"] or "", text)
     text = _PLACE_GETS_HEADING.sub(_each_placed, _PLACE_HEADING.sub(_each_placed, _unnumbered(text)))
     return _WISH.sub("", _STATE_WISH.sub(_wished, _SOFTENED.sub(r"\1", text))).strip()

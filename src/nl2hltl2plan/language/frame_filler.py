@@ -101,10 +101,11 @@ def count_in(text: str) -> bool:
 
 
 def _after_my(before: tuple[str, ...]) -> bool:
-    """Whether the words `before` a word end in "my" or "dear" and the words that describe whom they call:
-    "my", "my lovely", "my good old" ("my lovely assistants", "my good man"), a vocative's opening."""
+    """Whether the words `before` a word end in "my", "dear" or "dearest" and the words that describe whom
+    they call: "my", "my lovely", "my good old" ("my lovely assistants", "my good man", "Dearest Lily"), a
+    vocative's opening."""
     for k in range(len(before) - 1, -1, -1):
-        if before[k] in ("my", "dear"):
+        if before[k] in ("my", "dear", "dearest"):
             return True
         kinds = english_lemmas(american(before[k]))
         if "ADJ" not in kinds or before[k] in _keeps():

@@ -7,7 +7,8 @@ an action, and applies only where its parts name what it needs:
   a colon names one thing or place, so a label ("Task: ...", "Note: ...") is left as it is;
 - a thing asked as a topic, then what to do with it (`topic_said`): "The mug? Heat it and put it in the
   sink." is "Heat the mug and put it in the sink." (the question names one thing and nothing else, and the
-  sentence after it says "it" or "them");
+  sentence after it says "it" or "them"); "The mug in the sink - wash it ..." is "Wash the mug in the sink
+  ..." (a thing and where it is, set off by a dash or a colon, before a verb on "it");
 - a treatment and a "respectively" list after it (`treated_lists`): "wash the mug and the plate and put
   them in the sink and the cabinet respectively" is "put the washed mug and the washed plate in the sink
   and the cabinet respectively", which `respectively.distributed` writes out pair by pair.
@@ -16,6 +17,8 @@ an action, and applies only where its parts name what it needs:
 'mug -> sink, apple -> fridge'
 >>> topic_said("The mug? Heat it and put it in the sink.")
 'Heat the mug and put it in the sink.'
+>>> topic_said("The mug in the sink - wash it and put it in the cabinet.")
+'Wash the mug in the sink and put it in the cabinet.'
 >>> treated_lists("rinse the mug and the plate and put them in the sink and the cabinet respectively")
 'put the rinsed mug and the rinsed plate in the sink and the cabinet respectively'
 """
@@ -45,6 +48,14 @@ _TOPIC = re.compile(
     re.I,
 )
 _PRONOUN = re.compile(r"\b(?:it|them)\b", re.I)
+# "The apple in the microwave - slice it, ...": a thing and where it is, set off by a dash or a colon, then a
+# verb of the grammar on "it" (h261); its place is where it is found, never a step ("put it in the microwave")
+_PLACED_TOPIC = re.compile(
+    r"(?P<lead>^|(?<=[.!?])\s+)(?P<np>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)\s+"
+    r"(?P<where>(?:in|on|inside|from)\s+the\s+[a-z]+(?:\s+[a-z]+)?)\s*(?:\s[-\u2013\u2014]+|:)\s*"
+    r"(?P<verb>[a-z]+)\s+(?:it|them)\b",
+    re.I,
+)
 
 
 def _participles() -> dict[str, str]:
@@ -93,7 +104,12 @@ def topic_said(text: str) -> str:
         rest = _PRONOUN.sub(np.lower(), m["next"], count=1)
         return f"{m['lead']}{rest[0].upper()}{rest[1:]}"
 
-    return _TOPIC.sub(said, text)
+    def placed(m: re.Match[str]) -> str:
+        if m["verb"].lower() not in VERBS or not (_one_thing(m["np"]) and _one_thing(m["where"])):
+            return m[0]
+        return f"{m['lead']}{m['verb'].capitalize()} {m['np'].lower()} {m['where']}"
+
+    return _PLACED_TOPIC.sub(placed, _TOPIC.sub(said, text))
 
 
 def treated_lists(text: str) -> str:

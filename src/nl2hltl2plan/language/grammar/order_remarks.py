@@ -32,7 +32,11 @@ _REST = (
 _DONE = r"(?:is|are|has\s+been|have\s+been)\s+(?:done|finished|complete|completed|over)"
 # the treatments whose verb may open a remark ("Rinse the soap before anything else.")
 _TREATING = frozenset({"clean", "heat", "cool"})
-_PARTS = re.compile(r"\s*(?:,\s*(?:but|and)\s+|,|;|\s+but\s+)\s*", re.I)
+# (and "and" before a last thing that closes the sentence: "The bread comes first and the apple last", h261)
+_PARTS = re.compile(
+    r"\s*(?:,\s*(?:but|and)\s+|,|;|\s+but\s+|\s+and\s+(?=(?:the\s+)?[a-z]+(?:\s+[a-z]+){0,2}\s+last$))\s*",
+    re.I,
+)
 
 # sentences that only say the order is free (no task, no constraint): a free-order clause ("the order is up
 # to you"; content_words.free_order_phrase) in a sentence that opens with no verb ("Any order." alone does
