@@ -47,7 +47,9 @@ _RULES: tuple[tuple[str, str], ...] = (
     ),
     # the work before said done in the voice's word: "once all of that's charted", "once that's all laid"
     (
-        r"\b(once|when|after)\s+(?:all\s+(?:of\s+)?)?(that|this|everything)\s+(?:s|is|has\s+been)\s+(?:all\s+)?"
+        # ("once everything is done" is read as written: no "all" to add)
+        r"\b(once|when|after)\s+(?:all\s+(?:of\s+)?)?(?!everything\s+(?:s|is|has\s+been)\s+done\b)"
+        r"(that|this|everything)\s+(?:s|is|has\s+been)\s+(?:all\s+)?"
         r"(?!touched\b|handled\b|grabbed\b|grasped\b|picked\b|lifted\b)(?:[a-z]{3,}ed|laid|drawn|sewn|done)\b",
         r"\1 all \2 is done",
     ),
