@@ -1,0 +1,55 @@
+"""h265 (issue 23): session 32's trust leftovers, through `plan` (results/language/h265.md).
+
+- An until-guard whose lifting task (or a task ordered before it) itself needs the forbidden action
+  is refused at the spec (exit 2, naming both), where the planner answered "infeasible" (exit 1).
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from nl2hltl2plan.cli.main import main
+
+
+def plan(text: str, world: str, capsys) -> tuple[int, str]:
+    code = main(["plan", text, "--world", world, "--llm", "offline"])
+    return code, capsys.readouterr().err
+
+
+CONTRADICTS = "the instruction contradicts itself"
+
+
+@pytest.mark.data
+def test_a_ban_its_lifting_task_breaks_is_refused_naming_both(capsys):
+    text = "put the apple in the fridge, but don't open the fridge until the apple is in the fridge"
+    code, err = plan(text, "FloorPlan1", capsys)
+    assert code == 2 and CONTRADICTS in err, err
+    assert "forbids open(Fridge) until the task 'put the apple in the fridge' is done" in err
+
+
+@pytest.mark.data
+def test_a_ban_lifted_by_another_task_still_plans(capsys):
+    text = (
+        "put the mug in the sink and the apple in the fridge, "
+        "but don't open the fridge until the mug is in the sink"
+    )
+    code, err = plan(text, "FloorPlan1", capsys)
+    assert code == 0 and CONTRADICTS not in err, err
+
+
+@pytest.mark.data
+@pytest.mark.sweep
+@pytest.mark.parametrize(
+    "text, named",
+    [
+        ("put the apple in the fridge, do not touch the apple until the apple is in the fridge", "pickup"),
+        (
+            "put the egg in the fridge, then put the mug in the sink, "
+            "but don't open the fridge until the mug is in the sink",
+            "'put the egg in the fridge', ordered before it",
+        ),
+    ],
+)
+def test_until_contradictions_sweep(text, named, capsys):
+    code, err = plan(text, "FloorPlan1", capsys)
+    assert code == 2 and CONTRADICTS in err and named in err, err
