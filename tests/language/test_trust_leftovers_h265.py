@@ -2,9 +2,13 @@
 
 - An until-guard whose lifting task (or a task ordered before it) itself needs the forbidden action
   is refused at the spec (exit 2, naming both), where the planner answered "infeasible" (exit 1).
+- A closing ", reversed." is read as "..., in reverse order" is; a turning round the grammar does not
+  read ("vice versa", "the other way round", "Reversed." on its own) is named (exit 2), not dropped.
 """
 
 from __future__ import annotations
+
+import json
 
 import pytest
 
@@ -53,3 +57,23 @@ def test_a_ban_lifted_by_another_task_still_plans(capsys):
 def test_until_contradictions_sweep(text, named, capsys):
     code, err = plan(text, "FloorPlan1", capsys)
     assert code == 2 and CONTRADICTS in err and named in err, err
+
+
+@pytest.mark.data
+def test_a_closing_reversed_turns_the_order_round(capsys):
+    text = "put the apple in the fridge and put the mug in the sink, reversed."
+    code = main(["plan", text, "--world", "FloorPlan1", "--llm", "offline", "--json"])
+    assert code == 0 and json.loads(capsys.readouterr().out)["before"] == [["B", "A"]]
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "text, named",
+    [
+        ("put the apple in the fridge and then put the mug in the sink, vice versa.", "'vice versa' (order)"),
+        ("put the apple in the fridge, then put the mug in the sink. Reversed.", "'Reversed' (order)"),
+    ],
+)
+def test_a_turning_round_the_grammar_does_not_read_is_named(text, named, capsys):
+    code, err = plan(text, "FloorPlan1", capsys)
+    assert code == 2 and named in err, err
