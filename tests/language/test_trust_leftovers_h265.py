@@ -4,6 +4,8 @@
   is refused at the spec (exit 2, naming both), where the planner answered "infeasible" (exit 1).
 - A closing ", reversed." is read as "..., in reverse order" is; a turning round the grammar does not
   read ("vice versa", "the other way round", "Reversed." on its own) is named (exit 2), not dropped.
+- "or" between two places of one thing ("put the apple in the fridge, or the sink") is a choice no HTT
+  states: refused by name (exit 2), where the learned re-read made it "chill the apple, put it in the sink".
 """
 
 from __future__ import annotations
@@ -77,3 +79,19 @@ def test_a_closing_reversed_turns_the_order_round(capsys):
 def test_a_turning_round_the_grammar_does_not_read_is_named(text, named, capsys):
     code, err = plan(text, "FloorPlan1", capsys)
     assert code == 2 and named in err, err
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "text",
+    ["put the apple in the fridge or put it in the sink", "put the apple in the fridge, or the sink"],
+)
+def test_a_choice_between_places_of_one_thing_is_refused(text, capsys):
+    code, err = plan(text, "FloorPlan1", capsys)
+    assert code == 2 and ("a choice between places" in err or "a list of destinations" in err), err
+
+
+@pytest.mark.data
+def test_a_bans_or_is_no_choice(capsys):
+    code, err = plan("put the mug in the sink, never open the fridge or the microwave", "FloorPlan1", capsys)
+    assert code == 0, err
