@@ -11,6 +11,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pytest
 
@@ -95,3 +96,16 @@ def test_a_choice_between_places_of_one_thing_is_refused(text, capsys):
 def test_a_bans_or_is_no_choice(capsys):
     code, err = plan("put the mug in the sink, never open the fridge or the microwave", "FloorPlan1", capsys)
     assert code == 0, err
+
+
+def _held() -> list[tuple[str, int, str]]:
+    path = Path(__file__).parent / "data" / "trust_leftovers_h265_held.txt"
+    rows = [line.split("|", 3) for line in path.read_text().splitlines() if line and not line.startswith("#")]
+    return [(world.strip(), int(code), text.strip()) for world, code, _, text in rows]
+
+
+@pytest.mark.data
+@pytest.mark.sweep
+@pytest.mark.parametrize("world, code, text", _held())
+def test_held_out_lines_exit_as_annotated(world, code, text, capsys):
+    assert plan(text, world, capsys)[0] == code
