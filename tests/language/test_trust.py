@@ -203,13 +203,10 @@ def test_no_instruction_of_our_sets_yields_a_spec_missing_part_of_it(name, backe
 
 
 def test_dead_llm_makes_scenarios_errored_and_resume_reruns_them(tmp_path, stub, capsys):
-    from nl2hltl2plan.config import data_path
-
     if data_dir(required=False) is None:
         pytest.skip("needs ../shared/data")
-    line = data_path("benchmark", "alfred_test50_gt.jsonl").read_text().splitlines()[0]
-    gt = tmp_path / "gt.jsonl"
-    gt.write_text(line + "\n")
+    # a line of our own trust set (with a start draw), never the evaluation file: test50 feeds no test
+    gt = Path(__file__).parent / "data" / "trust_plain1_bench.jsonl"
     out = tmp_path / "bench"
     stub.answer = lambda body: (500, {"error": {"message": "down", "type": "server_error"}})
     args = [

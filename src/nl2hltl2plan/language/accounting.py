@@ -61,7 +61,7 @@ from nl2hltl2plan.language.landmarks import (
     relative_subject,
 )
 from nl2hltl2plan.language.memo import reading_memo
-from nl2hltl2plan.language.mention_use import lamps_off, looked_at, unused_mentions
+from nl2hltl2plan.language.mention_use import either_place, lamps_off, looked_at, unused_mentions
 from nl2hltl2plan.language.negations import (
     NO_CONSTRAINT,
     about_order,
@@ -137,7 +137,7 @@ def account(
     out += landmark_destinations(mentions, toks, parse)
     out += _invented_kinds(instruction, toks, mentions, parse)
     out += treated_after_placing(instruction, mentions, parse)
-    out += closed_after_placing(instruction, mentions, parse)
+    out += closed_after_placing(instruction, mentions, parse) + either_place(instruction, mentions, parse)
     out += returns_and_repeats(instruction, mentions, parse)
     out += other_instances(instruction, mentions, parse, instances)
     out += vague_words(instruction, mentions) + started(instruction, parse)

@@ -11,7 +11,9 @@ What a task requires: every action of its leaves (all leaves are required: an HT
 no choice), the change of state its kind makes (`heat(Mug)` for a heat_place), and the opening of a
 receptacle, or of what holds the thing, that stays closed at the start for every instance (a put into
 the fridge opens the fridge, one into a dishwasher's rack the dishwasher).
-Only a ban never lifted is judged here; an until-guard waits for its task, which the planner orders.
+An until-guard ("don't open the fridge until the apple is in the fridge") is judged against the task
+that lifts it and the tasks ordered before that one: each must be done while the ban holds, so what
+they require, short of the lifting task's own last step (the one that lifts it), contradicts it.
 """
 
 from __future__ import annotations
@@ -19,7 +21,7 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping, Sequence
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
+from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec, transitive_closure
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.constraints import Constraint
 from nl2hltl2plan.logic.hierarchical import LeafOrFormula
@@ -36,24 +38,50 @@ def refuse_contradictions(
     leaf_specs: Mapping[str, LeafOrFormula],
     leaf_task: Mapping[str, str],
     world: World | None,
+    before: Sequence[tuple[str, str]] = (),
 ) -> None:
-    """Raise HTTError when a never-lifted constraint forbids an action or state a task requires."""
-    bans = [(c, Constraint(c.text, tuple(c.forbid))) for c in constraints if c.until is None]
-    if not bans:
-        return
-    for task in tasks:
-        for needed in _required(task, leaf_specs, leaf_task, world):
-            for said, ban in bans:
-                if all(ban.forbids(atom) for atom in needed):
-                    raise HTTError(_message(said, needed[0], task))
+    """Raise HTTError when a constraint forbids an action or state a task requires while it holds: a
+    never-lifted one, any task; an until-guard, the task that lifts it or one ordered before that."""
+    by_id = {t.id: t for t in tasks}
+    earlier = transitive_closure(list(before))
+    for said in constraints:
+        ban = Constraint(said.text, tuple(said.forbid))
+        lifter = by_id.get(said.until) if said.until is not None else None
+        if said.until is not None and lifter is None:
+            continue
+        judged = [lifter] if lifter else list(tasks)
+        judged += [t for t in tasks if lifter and (t.id, lifter.id) in earlier]
+        for task in judged:
+            lifting = _lifting_steps(task, leaf_specs, leaf_task) if task is lifter else set()
+            for needed in _required(task, leaf_specs, leaf_task, world):
+                if not set(needed) <= lifting and all(ban.forbids(atom) for atom in needed):
+                    raise HTTError(_message(said, needed[0], task, lifter))
 
 
-def _message(c: ConstraintSpec, atom: str, task: BaseTaskSpec) -> str:
-    what = repr(task.text) if task.text else task.summary()
+def _lifting_steps(
+    task: BaseTaskSpec, leaf_specs: Mapping[str, LeafOrFormula], leaf_task: Mapping[str, str]
+) -> set[str]:
+    """Each leaf's last step: the one that may complete the task, so lift the guard as it happens."""
+    leaves = [leaf_specs.get(k) for k, t in leaf_task.items() if t == task.id]
+    return {spec[-1] for spec in leaves if isinstance(spec, list) and spec}
+
+
+def _message(c: ConstraintSpec, atom: str, task: BaseTaskSpec, lifter: BaseTaskSpec | None) -> str:
+    what = _named(task)
+    if lifter is None:
+        return (
+            f"the instruction contradicts itself: {c.text!r} forbids {atom}, which the task {what} "
+            "requires (say which one holds)"
+        )
+    needs = "that task requires it" if task is lifter else f"the task {what}, ordered before it, requires it"
     return (
-        f"the instruction contradicts itself: {c.text!r} forbids {atom}, which the task {what} "
-        "requires (say which one holds)"
+        f"the instruction contradicts itself: {c.text!r} forbids {atom} until the task {_named(lifter)} "
+        f"is done, but {needs} (say which one holds)"
     )
+
+
+def _named(task: BaseTaskSpec) -> str:
+    return repr(task.text) if task.text else task.summary()
 
 
 def _required(

@@ -14,12 +14,13 @@ backend, or words the reader rewrote), its mentions are not judged: nothing is f
 
 from __future__ import annotations
 
+import re
 from collections.abc import Sequence
 
 from nl2hltl2plan.language.content_words import Unread, categories
 from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.grounding import Mention
-from nl2hltl2plan.language.parse_usage import ParseUsage
+from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 Span = tuple[int, int]
@@ -97,3 +98,41 @@ def lamps_off(toks: Sequence[tuple[str, int, int]], parse: ParseUsage) -> list[U
 
 _OFF = frozenset((w, "off") for w in ("lamp", "lamps", "light", "lights"))
 _NO_OFF = "no base task switches something off"
+
+
+_OR = re.compile(r"\bor\b", re.I)
+_END = re.compile(r"[.;!?]")
+_CHOICE = "a choice between places: every task of the spec is done, in one place; say which"
+
+
+def either_place(instruction: str, mentions: list[Mention], parse: ParseUsage) -> list[Unread]:
+    """ "Put the apple in the fridge, or the sink": "or" between two places of one thing (where a task
+    of it puts it, or the appliance its kind implies) offers a choice, which no HTT states (every task is
+    required, each in one place); a reading of one or both places is not what was asked. A ban's "or"
+    ("never open the fridge or the microwave") bans both and is the negation's."""
+    out = []
+    for m in _OR.finditer(instruction):
+        if parse.constraint_at(m.start()) is not None:
+            continue
+        right = next((x for x in mentions if x.char_start >= m.end()), None)
+        if right is None or _END.search(instruction, m.end(), right.char_start):
+            continue
+        said = [x for x in mentions if x.char_end <= m.start()]
+        for x in [x for x in said if not _END.search(instruction, x.char_end, m.start())]:
+            if _places_of_one_thing(parse, set(x.entry.types), set(right.entry.types)):
+                out.append(Unread(instruction[x.char_start : right.char_end], "place", _CHOICE))
+                break
+    return out
+
+
+def _places_of_one_thing(parse: ParseUsage, one: set[str], other: set[str]) -> bool:
+    """Whether a thing goes to one of them and to, or is treated in, the other ("heat it in the microwave
+    or on the stove" names two appliances of one treatment, which its state atom leaves open)."""
+    goes = {t.id: set(t.receptacle or ()) for t in parse.tasks}
+    places = {t.id: goes[t.id] | IMPLIED_TYPES.get(t.kind, set()) for t in parse.tasks}
+    return any(
+        one & places[a.id] and other & places[b.id] and (one & goes[a.id] or other & goes[b.id])
+        and set(a.object) & set(b.object)
+        for a in parse.tasks
+        for b in parse.tasks
+    )

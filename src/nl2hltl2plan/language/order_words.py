@@ -265,7 +265,7 @@ def misordered(
         if not pairs & closure:
             words = instruction[conn.start() : named.char_end]
             out.append(Unread(words, "order", "the reading does not order the tasks as these words say"))
-    return out + _first_not_first(instruction, mentions, parse, objects, closure)
+    return out + _first_not_first(instruction, mentions, parse, objects, closure) + _turned_round(instruction)
 
 
 # "first" opening a sentence, after a courtesy word at most ("Please, first you put ..."), not set off by a
@@ -375,6 +375,22 @@ def _sentence_span(text: str, at: int) -> tuple[int, int]:
 
 
 _SENTENCE_END = re.compile(r"[.;!?]")
+# words that turn round what was said, which the grammar does not read (it reads "..., in reverse order"
+# and "..., reversed" closing a sentence of tasks): "vice versa" and "the other way round" may swap the
+# places as well as the order, and "Reversed." on its own names no tasks
+_TURNED_ROUND = re.compile(
+    r"\b(?:vice[\s-]+versa|(?:the\s+)?other\s+way\s+a?round|the\s+opposite\s+(?:order|way|sequence))\b|"
+    r"(?:^|[.;!?]\s*)(?P<alone>(?:and\s+|then\s+)*(?:reversed|backwards|(?:in\s+)?reverse(?:\s+order)?))"
+    r"\s*[.;!?]*\s*$",
+    re.I,
+)
+
+
+def _turned_round(instruction: str) -> list[Unread]:
+    return [
+        Unread(m["alone"] or m.group(0), "order", "what it turns round is not read: say the order it means")
+        for m in _TURNED_ROUND.finditer(instruction)
+    ]
 
 
 def _tasks_of(

@@ -268,7 +268,7 @@ def _finish(
     leaf_specs = res.leaf_specs if found is None else found
     # "put the apple in the fridge but never open the fridge": the text, not the world, says no (exit 2)
     world_ = world if isinstance(world, World) else None
-    refuse_contradictions(res.tasks, res.constraint_specs, leaf_specs, res.leaf_task, world_)
+    refuse_contradictions(res.tasks, res.constraint_specs, leaf_specs, res.leaf_task, world_, res.before)
     htt = res.htt.model_copy(deep=True)
     for n in htt.nodes:
         spec = leaf_specs.get(n.id)

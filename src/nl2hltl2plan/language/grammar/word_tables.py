@@ -518,7 +518,7 @@ _FREE_T = (
     r"independently|at\s+your\s+(?:convenience|leisure))"
 )
 TRAILING: list[tuple[re.Pattern[str], str]] = [
-    (re.compile(r"\s*,?\s*(?:in\s+(?:the\s+)?reverse(?:\s+order)?|backwards)\s*$", _F), IN_REVERSE),
+    (re.compile(r"\s*,?\s*(?:(?:in\s+(?:the\s+)?)?reversed?(?:\s+order)?|backwards)\s*$", _F), IN_REVERSE),
     # a closing courtesy: ", cheers", ", thanks!", ", thank you" (`courtesy.txt`'s closing thanks)
     (re.compile(rf"\s*,?\s*(?:{courtesy_pattern('closing')}|please)\s*$", _F), ""),
     (re.compile(rf"\s*,?\s*(?:also\s+)?{_FREE_T}\s*$", _F), FREE),
