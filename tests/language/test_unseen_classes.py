@@ -300,8 +300,11 @@ def test_objects_joined_by_or_are_a_choice_not_a_list():
 
 
 def test_or_between_places_is_not_a_choice_of_objects():
-    """Near miss: "inside the safe or locker" offers places (the ALFRED annotations' style)."""
-    assert not any("a choice" in u for u in read("Put the egg in the fridge or microwave.")[2])
+    """Near miss: "inside the safe or locker" offers places (the ALFRED annotations' style), no choice of
+    objects; since h265 a choice of places is refused by its own name (it read heat_place Egg -> Fridge)."""
+    unread = read("Put the egg in the fridge or microwave.")[2]
+    assert not any("a choice between objects" in u for u in unread)
+    assert any("a choice between places" in u for u in unread)
 
 
 # ----- "last" / "once everything else is done" before the other tasks are written -----------------------
