@@ -2923,3 +2923,36 @@ DEV_H245: dict[str, dict[int, list[str]]] = {
             "trails."],
     },
 }
+
+
+# h262 (session 32, issues 28 and 24): held out. The four tasks in two voices of my own (a pharmacist, a
+# postal clerk): a frame clause before a colon, chit-chat, goal verbs of the voice, order freedom in the
+# voice's words, task 4's stages by the voice's labels. Committed before any rule changed (with DEV_H262
+# still unwritten), scored once at the end.
+HELD_H262: dict[str, dict[int, list[str]]] = {
+    "pharmacist": {
+        1: ["Two prescriptions to fill: green apple to the blue plate, orange to the yellow plate. Take care "
+            "now."],
+        2: ["Here's the dosage sheet for today: the green apple goes in the pink plate, the orange in the "
+            "yellow plate and the red apple in the blue plate. Which one gets dispensed first makes no "
+            "difference."],
+        3: ["Next patient, please! The carrot is dispensed into the blue plate, the orange into the yellow "
+            "plate, the green apple into the green plate and the red apple into the pink plate. Fill them in "
+            "any order."],
+        4: ["Step one of the regimen: put the green apple and the orange in the yellow plate, either one "
+            "first. Once both are in, step two: the carrot and the red apple go in the blue plate, in either "
+            "order. Get well soon!"],
+    },
+    "postal_clerk": {
+        1: ["Two parcels going out today: the green apple is addressed to the blue plate and the orange to "
+            "the yellow plate. Stamp them in whatever order."],
+        2: ["Sorting time! Green apple to the pink plate, orange to the yellow plate, red apple to the blue "
+            "plate. It doesn't matter which one ships first."],
+        3: ["Four letters in the tray: deliver the carrot to the blue plate, the orange to the yellow plate, "
+            "the green apple to the green plate and the red apple to the pink plate. Sort them in any "
+            "sequence. Next in line!"],
+        4: ["First delivery round: the green apple and the orange go into the yellow plate, in either order. "
+            "When both have arrived, second round: the carrot and the red apple into the blue plate, again "
+            "in any order."],
+    },
+}
