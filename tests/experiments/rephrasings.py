@@ -2956,3 +2956,41 @@ HELD_H262: dict[str, dict[int, list[str]]] = {
             "in any order."],
     },
 }
+
+
+# h262's dev batch (session 32): the same classes in three voices of my own (a waiter, a removals foreman, a
+# hotel concierge), looked at and mended against.
+DEV_H262: dict[str, dict[int, list[str]]] = {
+    "waiter": {
+        1: ["Table for two! The green apple is seated at the blue plate and the orange at the yellow plate. "
+            "Enjoy your meal."],
+        2: ["Here are tonight's specials: green apple on the pink plate, orange on the yellow plate, red "
+            "apple on the blue plate. It doesn't matter which one comes out first."],
+        3: ["Coming right up! Carrot on the blue plate, orange on the yellow plate, green apple on the green "
+            "plate and red apple on the pink plate. Serve them in any order."],
+        4: ["Starters first: the green apple and the orange go on the yellow plate, either one first. Once "
+            "both are served, the mains: the carrot and the red apple go on the blue plate, in any order."],
+    },
+    "removals_foreman": {
+        1: ["Right, lads, two items on the van list: green apple into the blue plate, orange into the yellow "
+            "plate. Mind your backs."],
+        2: ["Big job today. The green apple is moving into the pink plate, the orange into the yellow plate "
+            "and the red apple into the blue plate. Which one goes in first is up to you."],
+        3: ["The inventory says: carrot in the blue plate, orange in the yellow plate, green apple in the "
+            "green plate, red apple in the pink plate. Load them in any order."],
+        4: ["Ground floor first: move the green apple and the orange into the yellow plate, in either order. "
+            "Only once both are in, the carrot and the red apple go into the blue plate, again in either "
+            "order. Cheers, lads."],
+    },
+    "concierge": {
+        1: ["Welcome to the hotel! The green apple is booked into the blue plate and the orange into the "
+            "yellow plate."],
+        2: ["Your itinerary for the day: green apple to the pink plate, orange to the yellow plate, red "
+            "apple to the blue plate. The order of the visits is entirely flexible."],
+        3: ["Room assignments are ready: carrot in the blue plate, orange in the yellow plate, green apple "
+            "in the green plate and red apple in the pink plate. Check them in whatever order."],
+        4: ["First, the green apple and the orange check into the yellow plate, either one first. Once that "
+            "plate is full, the carrot and the red apple check into the blue plate, in any order. Have a "
+            "pleasant stay."],
+    },
+}
