@@ -117,7 +117,7 @@ def _list_labels_dropped(text: str, kinds: dict[str, bool], dropped: list[str] |
     names = mention_pattern(kinds, re.IGNORECASE)
 
     def dropped_label(m: re.Match[str]) -> str:
-        words = re.findall(r"[a-z0-9']+", m["label"].lower())
+        words = re.findall(r"[a-z0-9'-]+", m["label"].lower())  # ("year-end": one word)
         parts = [p for p in re.split(r"\s*(?:[,;]\s*(?:and\s+)?|\s+and\s+)\s*", m["list"]) if p]
         fits = [item.fullmatch(p) for p in parts]
         counts = {_COUNT.get(w, int(w) if w.isdigit() else None) for w in words} - {None}
