@@ -121,8 +121,10 @@ def _list_labels_dropped(text: str, kinds: dict[str, bool], dropped: list[str] |
         parts = [p for p in re.split(r"\s*(?:[,;]\s*(?:and\s+)?|\s+and\s+)\s*", m["list"]) if p]
         fits = [item.fullmatch(p) for p in parts]
         counts = {_COUNT.get(w, int(w) if w.isdigit() else None) for w in words} - {None}
+        turns = re.findall(rf"(?:^|[.!?]\s+){re.escape(m['label'].strip())}\s*:", text, re.IGNORECASE)
         if (
-            not all(fits)
+            len(turns) > 1  # a speaker's or a field's label, said again ("User: ... User: ...")
+            or not all(fits)
             or names.search(m["label"])
             or any(w in _LABEL_KEEPS or w.endswith("n't") for w in words)
             or any(w in _LABEL_KEEPS for f in fits if f for w in f["between"].lower().split())
