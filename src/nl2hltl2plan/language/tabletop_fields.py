@@ -35,6 +35,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import free_order_phrase, phrase_category, phrase_words
+from nl2hltl2plan.language.spelling import english_lemmas
 from nl2hltl2plan.language.tabletop_steps import label_remarks_read
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
@@ -126,7 +127,8 @@ def _list_labels_dropped(text: str, kinds: dict[str, bool], dropped: list[str] |
             len(turns) > 1  # a speaker's or a field's label, said again ("User: ... User: ...")
             or not all(fits)
             or names.search(m["label"])
-            or any(w in _LABEL_KEEPS or w.endswith("n't") for w in words)
+            or any(w in _LABEL_KEEPS or w.endswith("n't") or _how(w) for w in words)
+            or re.fullmatch(r"[a-z]|\d+", words[-1]) or words[-1] in _COUNT  # a part's name: "Plan A", "Step 2"
             or any(w in _LABEL_KEEPS for f in fits if f for w in f["between"].lower().split())
             or counts - {len(parts)}
         ):
@@ -136,6 +138,11 @@ def _list_labels_dropped(text: str, kinds: dict[str, bool], dropped: list[str] |
         return m["list"]
 
     return _ANNOUNCED.sub(dropped_label, text)
+
+
+def _how(word: str) -> bool:
+    """A word that says how or in what order ("alphabetically", "respectively")."""
+    return word.endswith("ly") and "ADV" in english_lemmas(word)
 
 
 def _put(m: re.Match[str]) -> str:
