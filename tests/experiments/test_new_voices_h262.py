@@ -21,9 +21,10 @@ TWO = "green apple in the pink plate, orange in the yellow plate, red apple in t
     [
         (2, f"Tonight's prep sheet: {TWO}."),
         (2, f"Okay, three tickets for you: {TWO}. Stamp them in whatever order."),
-        (3, "The carrot is allocated to the blue plate, the orange to the yellow plate, the green apple to the "
-            "green plate and the red apple to the pink plate. Who moves in first is entirely flexible."),
-        (1, "Green apple shipped to the blue plate, orange shipped to the yellow plate. Book them in any order."),
+        (3, "The carrot is allocated to the blue plate, the orange to the yellow plate, the green apple to "
+            "the green plate and the red apple to the pink plate. Who moves in first is entirely flexible."),
+        (1, "Green apple shipped to the blue plate, orange shipped to the yellow plate. Book them in any "
+            "order."),
     ],
 )
 def test_voice_frames_and_verbs_give_the_tasks_and_order(task: int, text: str) -> None:

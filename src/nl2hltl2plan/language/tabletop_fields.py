@@ -99,7 +99,9 @@ def _records_paired(text: str, kinds: dict[str, bool]) -> str:
 
 
 # a sentence's label before its colon, and the list after it up to the sentence's end
-_ANNOUNCED = re.compile(r"(?:^|(?<=[.!?]\s))(?P<label>[^.!?:;]{1,80}?)\s*:\s+(?P<list>[^.!?:]+?)\s*(?=[.!?]|$)")
+_ANNOUNCED = re.compile(
+    r"(?:^|(?<=[.!?]\s))(?P<label>[^.!?:;]{1,80}?)\s*:\s+(?P<list>[^.!?:]+?)\s*(?=[.!?]|$)"
+)
 _LABEL_KEEPS = phrase_words("tabletop_fields.txt", "announce_not")
 _COUNT = {w: n for n, w in enumerate("zero one two three four five six seven eight nine ten".split())}
 
@@ -124,11 +126,13 @@ def _list_labels_dropped(text: str, kinds: dict[str, bool], dropped: list[str] |
         counts = {_COUNT.get(w, int(w) if w.isdigit() else None) for w in words} - {None}
         turns = re.findall(rf"(?:^|[.!?]\s+){re.escape(m['label'].strip())}\s*:", text, re.IGNORECASE)
         if (
-            len(turns) > 1  # a speaker's or a field's label, said again ("User: ... User: ...")
+            not words
+            or len(turns) > 1  # a speaker's or a field's label, said again ("User: ... User: ...")
             or not all(fits)
             or names.search(m["label"])
             or any(w in _LABEL_KEEPS or w.endswith("n't") or _how(w) for w in words)
-            or re.fullmatch(r"[a-z]|\d+", words[-1]) or words[-1] in _COUNT  # a part's name: "Plan A", "Step 2"
+            # a part's name: "Plan A", "Step 2"
+            or re.fullmatch(r"[a-z]|\d+", words[-1]) or words[-1] in _COUNT
             or any(w in _LABEL_KEEPS for f in fits if f for w in f["between"].lower().split())
             or counts - {len(parts)}
         ):

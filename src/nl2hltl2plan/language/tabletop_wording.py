@@ -203,7 +203,9 @@ def moving_idioms_read(text: str, kinds: dict[str, bool]) -> str:
 
 # verbs whose participle before "to" keeps a thing from its plate or holds it ("is barred from / kept to"):
 # never read as its going there
-_HELD_BACK = frozenset("keep ban forbid prohibit bar restrict deny lock limit confine hold stick chain tie".split())
+_HELD_BACK = frozenset(
+    "keep ban forbid prohibit bar restrict deny lock limit confine hold stick chain tie".split()
+)
 
 
 def assigned_read(text: str, kinds: dict[str, bool]) -> str:
