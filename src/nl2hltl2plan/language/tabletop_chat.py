@@ -12,6 +12,8 @@ Read before any reader sees the text (`TabletopReader.as_read`), each as the pla
 - a verb the system has no word for before "them" and a free order ("Book them in any sequence", "Stamp
   them in whatever order") restates the job: "do them in any sequence" (h262); a word used so, at a
   clause's start, is no thing ("book" names no Book there);
+- "once that plate's ready / is full" (the plate just named, done) is "once they're all there" (h262; the
+  words of done are `tabletop_chat.txt`'s `ready`);
 - "once you've got them both in there" (the one asked having placed them) is "once they're both there"
   (h229; `tabletop_chat.txt`'s `yours`);
 - a thing taken up again by a pronoun after a comma ("the orange, that one can go in the yellow plate") is
@@ -79,6 +81,13 @@ def _restated(m: re.Match[str], names: frozenset[str]) -> str:
     return "do" if "VERB" in english_lemmas(verb) else m[0]
 
 
+# "once that plate's ready": the plate just named, with what was put on it, done
+_PLATE_READY = re.compile(
+    rf"\b(?P<head>when|once|after|as soon as)\s+(?:that|this)\s+plate(?:'s|\s+is|\s+has\s+been)\s+"
+    rf"{phrase_list_pattern('tabletop_chat.txt', 'ready')}\b",
+    re.IGNORECASE,
+)
+
 # "the orange, that one can go ...": the thing taken up again by a pronoun
 _RESUMED = (
     rf",\s+{phrase_list_pattern('tabletop_chat.txt', 'resumptive')}\s+"
@@ -125,5 +134,6 @@ def chat_read(text: str, kinds: dict[str, bool], dropped: list[str] | None = Non
     text = _RESTATED.sub(lambda m: _restated(m, names), text)
     text = _YOURS.sub(lambda m: f"{m['head']} they're {m['all'] or 'all'} there", text)  # "in there": there
     text = _ON_IT.sub(r"\g<head>there", text)
+    text = _PLATE_READY.sub(r"\g<head> they're all there", text)
     text = _resumed(text, kinds)
     return without_greetings(text, lambda name: any(name.lower() in said.split() for said in kinds))
