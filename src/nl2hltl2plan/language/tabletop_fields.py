@@ -35,6 +35,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import free_order_phrase, phrase_category, phrase_words
+from nl2hltl2plan.language.headings import counted_headings
 from nl2hltl2plan.language.spelling import english_lemmas
 from nl2hltl2plan.language.tabletop_steps import label_remarks_read
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
@@ -129,6 +130,7 @@ def _list_labels_dropped(text: str, kinds: dict[str, bool], dropped: list[str] |
             not words
             or len(turns) > 1  # a speaker's or a field's label, said again ("User: ... User: ...")
             or not all(fits)
+            or counted_headings(f"{m['label']}:")  # "Four items:": `tabletop_headings` reads and checks it
             or names.search(m["label"])
             or any(w in _LABEL_KEEPS or w.endswith("n't") or _how(w) for w in words)
             # a part's name: "Plan A", "Step 2"
