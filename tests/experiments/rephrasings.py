@@ -2923,3 +2923,74 @@ DEV_H245: dict[str, dict[int, list[str]]] = {
             "trails."],
     },
 }
+
+
+# h262 (session 32, issues 28 and 24): held out. The four tasks in two voices of my own (a pharmacist, a
+# postal clerk): a frame clause before a colon, chit-chat, goal verbs of the voice, order freedom in the
+# voice's words, task 4's stages by the voice's labels. Committed before any rule changed (with DEV_H262
+# still unwritten), scored once at the end.
+HELD_H262: dict[str, dict[int, list[str]]] = {
+    "pharmacist": {
+        1: ["Two prescriptions to fill: green apple to the blue plate, orange to the yellow plate. Take care "
+            "now."],
+        2: ["Here's the dosage sheet for today: the green apple goes in the pink plate, the orange in the "
+            "yellow plate and the red apple in the blue plate. Which one gets dispensed first makes no "
+            "difference."],
+        3: ["Next patient, please! The carrot is dispensed into the blue plate, the orange into the yellow "
+            "plate, the green apple into the green plate and the red apple into the pink plate. Fill them in "
+            "any order."],
+        4: ["Step one of the regimen: put the green apple and the orange in the yellow plate, either one "
+            "first. Once both are in, step two: the carrot and the red apple go in the blue plate, in either "
+            "order. Get well soon!"],
+    },
+    "postal_clerk": {
+        1: ["Two parcels going out today: the green apple is addressed to the blue plate and the orange to "
+            "the yellow plate. Stamp them in whatever order."],
+        2: ["Sorting time! Green apple to the pink plate, orange to the yellow plate, red apple to the blue "
+            "plate. It doesn't matter which one ships first."],
+        3: ["Four letters in the tray: deliver the carrot to the blue plate, the orange to the yellow plate, "
+            "the green apple to the green plate and the red apple to the pink plate. Sort them in any "
+            "sequence. Next in line!"],
+        4: ["First delivery round: the green apple and the orange go into the yellow plate, in either order. "
+            "When both have arrived, second round: the carrot and the red apple into the blue plate, again "
+            "in any order."],
+    },
+}
+
+
+# h262's dev batch (session 32): the same classes in three voices of my own (a waiter, a removals foreman, a
+# hotel concierge), looked at and mended against.
+DEV_H262: dict[str, dict[int, list[str]]] = {
+    "waiter": {
+        1: ["Table for two! The green apple is seated at the blue plate and the orange at the yellow plate. "
+            "Enjoy your meal."],
+        2: ["Here are tonight's specials: green apple on the pink plate, orange on the yellow plate, red "
+            "apple on the blue plate. It doesn't matter which one comes out first."],
+        3: ["Coming right up! Carrot on the blue plate, orange on the yellow plate, green apple on the green "
+            "plate and red apple on the pink plate. Serve them in any order."],
+        4: ["Starters first: the green apple and the orange go on the yellow plate, either one first. Once "
+            "both are served, the mains: the carrot and the red apple go on the blue plate, in any order."],
+    },
+    "removals_foreman": {
+        1: ["Right, lads, two items on the van list: green apple into the blue plate, orange into the yellow "
+            "plate. Mind your backs."],
+        2: ["Big job today. The green apple is moving into the pink plate, the orange into the yellow plate "
+            "and the red apple into the blue plate. Which one goes in first is up to you."],
+        3: ["The inventory says: carrot in the blue plate, orange in the yellow plate, green apple in the "
+            "green plate, red apple in the pink plate. Load them in any order."],
+        4: ["Ground floor first: move the green apple and the orange into the yellow plate, in either order. "
+            "Only once both are in, the carrot and the red apple go into the blue plate, again in either "
+            "order. Cheers, lads."],
+    },
+    "concierge": {
+        1: ["Welcome to the hotel! The green apple is booked into the blue plate and the orange into the "
+            "yellow plate."],
+        2: ["Your itinerary for the day: green apple to the pink plate, orange to the yellow plate, red "
+            "apple to the blue plate. The order of the visits is entirely flexible."],
+        3: ["Room assignments are ready: carrot in the blue plate, orange in the yellow plate, green apple "
+            "in the green plate and red apple in the pink plate. Check them in whatever order."],
+        4: ["First, the green apple and the orange check into the yellow plate, either one first. Once that "
+            "plate is full, the carrot and the red apple check into the blue plate, in any order. Have a "
+            "pleasant stay."],
+    },
+}

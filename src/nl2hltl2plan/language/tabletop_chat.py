@@ -9,6 +9,11 @@ Read before any reader sees the text (`TabletopReader.as_read`), each as the pla
 - a greeting, an agent's reply, a closing thanks and a sign-off with a name that is no object or plate
   ("Hi there, ... Cheers, Ana", "Hey, when you're done, ...") are removed as in every reader, by one
   policy (`courtesy.without_greetings`);
+- a verb the system has no word for before "them" and a free order ("Book them in any sequence", "Stamp
+  them in whatever order") restates the job: "do them in any sequence" (h262); a word used so, at a
+  clause's start, is no thing ("book" names no Book there);
+- "once that plate's ready / is full" (the plate just named, done) is "once they're all there" (h262; the
+  words of done are `tabletop_chat.txt`'s `ready`);
 - "once you've got them both in there" (the one asked having placed them) is "once they're both there"
   (h229; `tabletop_chat.txt`'s `yours`);
 - a thing taken up again by a pronoun after a comma ("the orange, that one can go in the yellow plate") is
@@ -33,10 +38,11 @@ from __future__ import annotations
 
 import re
 
-from nl2hltl2plan.language.content_words import phrase_list_pattern
+from nl2hltl2plan.language.content_words import free_order_phrase, phrase_list_pattern, vocabulary
 from nl2hltl2plan.language.courtesy import without_greetings
 from nl2hltl2plan.language.frame_drops import frames_dropped
 from nl2hltl2plan.language.handover_discourse import frame_words
+from nl2hltl2plan.language.spelling import english_lemmas
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
 _FIND = re.compile(
@@ -54,6 +60,31 @@ _ON_IT = re.compile(
 _YOURS = re.compile(
     rf"\b(?P<head>when|once|after|as soon as)\s+{phrase_list_pattern('tabletop_chat.txt', 'yours')}\s+"
     r"(?:them|those|these|the two)(?:\s+(?P<all>both|all))?\s+(?:in|on|onto)\s+(?:there|it)\b",
+    re.IGNORECASE,
+)
+
+# a verb at a clause's start, before the things said as a pronoun and a free order ("Book them in any
+# sequence"): the job said in the voice's words
+_RESTATED = re.compile(
+    rf"(?:^|(?<=[.!?;,]\s))(?P<verb>[A-Za-z]+)(?=\s+(?:them|these|those|the\s+lot)(?:\s+(?:all|both))?\s+"
+    rf"(?:{free_order_phrase('adverb')})\b)",
+    re.IGNORECASE,
+)
+
+
+def _restated(m: re.Match[str], names: frozenset[str]) -> str:
+    """ "do" for a verb that names no action of the system (no word of `content_words.txt`) nor a word of
+    the world's names; the verb as it is otherwise ("Remove them in any order", "Check them ...")."""
+    verb = m["verb"].lower()
+    if verb in names or any(verb in words for words in vocabulary().values()):
+        return m[0]
+    return "do" if "VERB" in english_lemmas(verb) else m[0]
+
+
+# "once that plate's ready": the plate just named, with what was put on it, done
+_PLATE_READY = re.compile(
+    rf"\b(?P<head>when|once|after|as soon as)\s+(?:that|this)\s+plate(?:'s|\s+is|\s+has\s+been)\s+"
+    rf"{phrase_list_pattern('tabletop_chat.txt', 'ready')}\b",
     re.IGNORECASE,
 )
 
@@ -100,7 +131,9 @@ def chat_read(text: str, kinds: dict[str, bool], dropped: list[str] | None = Non
     names = frozenset(w for name in kinds for w in name.lower().split())
     text = frames_dropped(_document_label_dropped(text), names, dropped)
     text = _FIND.sub(lambda m: f"{m['order']} you like", text)
+    text = _RESTATED.sub(lambda m: _restated(m, names), text)
     text = _YOURS.sub(lambda m: f"{m['head']} they're {m['all'] or 'all'} there", text)  # "in there": there
     text = _ON_IT.sub(r"\g<head>there", text)
+    text = _PLATE_READY.sub(r"\g<head> they're all there", text)
     text = _resumed(text, kinds)
     return without_greetings(text, lambda name: any(name.lower() in said.split() for said in kinds))

@@ -15,6 +15,10 @@ on the instruction's lines as `tabletop_lines.lines_joined` gives them:
 - an order label that any order will do ("Order: any", "Order - whatever", "Sequence: free"): "In any
   order.", which the readers read as that (and refuse beside "then", as they refuse "..., then ..., in any
   order");
+- a label that announces the list of placements after its colon ("Here's today's feeding chart: green
+  apple in the pink plate, ...", "Per the ledger, two entries to post: ..."): dropped, and said in the
+  result's notes, where it names no thing or plate of the world, says no order, negation or stage, and
+  any count it says is the list's length (`_list_labels_dropped`, h262);
 - step labels that each free their own step ("Step 1 (any order): ... Step 2, after step 1 (any order):
   ..."): `tabletop_steps.label_remarks_read`.
 
@@ -31,6 +35,8 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import free_order_phrase, phrase_category, phrase_words
+from nl2hltl2plan.language.headings import counted_headings
+from nl2hltl2plan.language.spelling import english_lemmas
 from nl2hltl2plan.language.tabletop_steps import label_remarks_read
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
@@ -39,10 +45,11 @@ _WHERE = phrase_words("tabletop_fields.txt", "where")
 _LABEL = re.compile(r"(?:^|(?<=[.;|,!?])|(?<=\s))(?P<label>[A-Za-z]+)\s*:\s*", re.IGNORECASE)
 
 
-def fields_read(text: str, kinds: dict[str, bool]) -> str:
-    """`text` with its records of labelled fields, "as follows" lists, ordered Markdown parts and "don't
-    ... until then" read (see the module docstring); `kinds`: each name in words -> is it a plate."""
-    text = _records_paired(text, kinds)
+def fields_read(text: str, kinds: dict[str, bool], dropped: list[str] | None = None) -> str:
+    """`text` with its records of labelled fields, "as follows" lists, labels that announce a list, ordered
+    Markdown parts and "don't ... until then" read (see the module docstring); `kinds`: each name in words
+    -> is it a plate; a label dropped is added to `dropped`."""
+    text = _list_labels_dropped(_records_paired(text, kinds), kinds, dropped)
     text = _AS_FOLLOWS.sub(lambda m: f"{m['verb']}{m['free'] or ''}:", text)
     text = _ORDER_LABEL.sub(_any_order_label, text)
     return label_remarks_read(_UNTIL_THEN.sub(_then_put, _parts_ordered(text)))
@@ -90,6 +97,58 @@ def _records_paired(text: str, kinds: dict[str, bool]) -> str:
     if any(kinds.get(_name(m["plate"])) is not True for m in pairs):
         return text
     return pair.sub(_put, text)
+
+
+# a sentence's label before its colon, and the list after it up to the sentence's end
+_ANNOUNCED = re.compile(
+    r"(?:^|(?<=[.!?]\s))(?P<label>[^.!?:;]{1,80}?)\s*:\s+(?P<list>[^.!?:]+?)\s*(?=[.!?]|$)"
+)
+_LABEL_KEEPS = phrase_words("tabletop_fields.txt", "announce_not")
+_COUNT = {w: n for n, w in enumerate("zero one two three four five six seven eight nine ten".split())}
+
+
+def _list_labels_dropped(text: str, kinds: dict[str, bool], dropped: list[str] | None) -> str:
+    """`text` without the labels that announce the list of placements after their colon (see the module
+    docstring): each part of the list is one thing, at most two words that name nothing, "in" / "on" /
+    "to" and one plate ("green apple posted to the blue plate", "put the carrot in the blue plate")."""
+    things = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
+    plates = mention_pattern([n for n, plate in kinds.items() if plate]).pattern
+    item = re.compile(
+        rf"(?:(?:put|place|move|drop|set|transfer|deliver)\s+)?(?:the\s+|one\s+|an?\s+)?{things}"
+        rf"(?P<between>(?:\s+[a-z']+){{0,2}}?)\s+(?:in|on|into|onto|to)\s+(?:the\s+)?{plates}",
+        re.IGNORECASE,
+    )
+    names = mention_pattern(kinds, re.IGNORECASE)
+
+    def dropped_label(m: re.Match[str]) -> str:
+        words = re.findall(r"[a-z0-9'-]+", m["label"].lower())  # ("year-end": one word)
+        parts = [p for p in re.split(r"\s*(?:[,;]\s*(?:and\s+)?|\s+and\s+)\s*", m["list"]) if p]
+        fits = [item.fullmatch(p) for p in parts]
+        counts = {_COUNT.get(w, int(w) if w.isdigit() else None) for w in words} - {None}
+        turns = re.findall(rf"(?:^|[.!?]\s+){re.escape(m['label'].strip())}\s*:", text, re.IGNORECASE)
+        if (
+            not words
+            or len(turns) > 1  # a speaker's or a field's label, said again ("User: ... User: ...")
+            or not all(fits)
+            or counted_headings(f"{m['label']}:")  # "Four items:": `tabletop_headings` reads and checks it
+            or names.search(m["label"])
+            or any(w in _LABEL_KEEPS or w.endswith("n't") or _how(w) for w in words)
+            # a part's name: "Plan A", "Step 2"
+            or re.fullmatch(r"[a-z]|\d+", words[-1]) or words[-1] in _COUNT
+            or any(w in _LABEL_KEEPS for f in fits if f for w in f["between"].lower().split())
+            or counts - {len(parts)}
+        ):
+            return m[0]
+        if dropped is not None:
+            dropped.append(" ".join(m["label"].split()))
+        return m["list"]
+
+    return _ANNOUNCED.sub(dropped_label, text)
+
+
+def _how(word: str) -> bool:
+    """A word that says how or in what order ("alphabetically", "respectively")."""
+    return word.endswith("ly") and "ADV" in english_lemmas(word)
 
 
 def _put(m: re.Match[str]) -> str:

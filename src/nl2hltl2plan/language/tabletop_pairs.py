@@ -187,14 +187,14 @@ class TabletopReader:
         self.frames = []  # what the general filler rule drops, for `notes`
         text = names_spelt(stops_read(chat_read(lines_joined(lines, kinds), kinds, self.frames)), kinds)
         text = bracketed_list_opened(text, kinds)  # "sort fruit (green apple -> pink plate, ...)"
-        text = fields_read(text, kinds)  # "Object: ... Target: ...", "as follows:", "### Phase B (after A)"
+        text = fields_read(text, kinds, self.frames)  # "Object: ... Target: ...", "as follows:", "Chart: ..."
         text = answered(text)  # "Q: Where does the green apple go? A: On the blue plate."
         text = dialogue_read(text, mention_pattern(kinds, re.I))  # "Robot: What do you need? Me: ..."
         text = scenario_read(text, mention_pattern(kinds, re.I))  # "Given ..., when I say go, then ..."
         mentions = mention_pattern(kinds, re.I)
         text = role_dropped(text, mentions)  # "As a tidy person, I want ..."
         text = robot_addressed(ordinal_things_read(text, mentions))  # "The first thing is ...", "it puts"
-        text = moving_idioms_read(end_opener_read(turn_phrases_read(text)))  # "Having done that,"
+        text = moving_idioms_read(end_opener_read(turn_phrases_read(text)), kinds)  # "Having done that,"
         return order_words_spelt(names_respelt(text, kinds))
 
     def prepared(self, instruction: str) -> str:

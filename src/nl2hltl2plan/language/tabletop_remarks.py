@@ -46,9 +46,10 @@ _THE_THINGS = (
 _HEADING_FRAME = re.compile(
     rf"^{TIDY_VERB}\s+(?:(?:out|up)\s+)?{_THE_THINGS}(?:\s+(?:out|up))?(?:\s+for\s+(?:me|us))?$"
 )
-# a freedom statement: what it is about (the order, which comes first, what depends on what) ...
+# a freedom statement: what it is about (the order, which comes first, what depends on what; "who moves in
+# first": a voice's things said as people, h262) ...
 _ORDER_TOPIC = re.compile(
-    r"\b(?:order(?:ing)?|sequenc(?:e|ing)|which(?:ever)?\b[a-z'\s]{0,24}?\b(?:first|(?:start|begin)(?:\s+with)?)|"
+    r"\b(?:order(?:ing)?|sequenc(?:e|ing)|(?:which|who)(?:ever)?\b[a-z'\s]{0,24}?\b(?:first|(?:start|begin)(?:\s+with)?)|"
     # "either one can go first", "any step may come first", "either of the steps may be done first"
     r"(?:either|any|whichever)(?:\s+(?:one|step|task|placement|move|part|item)|\s+of\s+(?:them|the\s+(?:two\s+)?"
     r"(?:steps|tasks|placements|moves|parts|items)))?\s+(?:(?:can|may|could|might)\s+)?"

@@ -30,6 +30,7 @@ from nl2hltl2plan.language.content_words import free_order_remarks
 from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.grounding import sentence_start
 from nl2hltl2plan.language.handover_words import SET_OFF_FOR, WAY_IDIOM
+from nl2hltl2plan.language.spelling import english_lemmas
 from nl2hltl2plan.language.statements import WHERE_VERB, asked_before
 from nl2hltl2plan.language.tabletop_remarks import FREE_ORDER, TIDY_VERB, remarks_read
 from nl2hltl2plan.language.tabletop_waits import plate_waits_read
@@ -191,12 +192,49 @@ _DO_INVERTED = re.compile(
 )
 
 
-def moving_idioms_read(text: str) -> str:
+def moving_idioms_read(text: str, kinds: dict[str, bool]) -> str:
     """`text` with the idioms of moving said as "goes (to)" (`handover_words.WAY_IDIOM`, `SET_OFF_FOR`): "the
-    orange makes its way into the yellow plate", "the carrot sets off for the blue plate"; and "do" after a
-    time clause put back (`_DO_INVERTED`)."""
+    orange makes its way into the yellow plate", "the carrot sets off for the blue plate"; a thing sent
+    to a plate by a participle as "goes" (`assigned_read`); and "do" after a time clause put back
+    (`_DO_INVERTED`). `kinds`: each name in words -> is it a plate."""
     text = re.sub(WAY_IDIOM, "goes ", re.sub(SET_OFF_FOR, "goes to", text, flags=re.I), flags=re.I)
-    return _DO_INVERTED.sub(r"\1, ", text)
+    return _DO_INVERTED.sub(r"\1, ", assigned_read(text, kinds))
+
+
+# verbs whose participle before "to" keeps a thing from its plate or holds it ("is barred from / kept to"):
+# never read as its going there
+_HELD_BACK = frozenset(
+    "keep ban forbid prohibit bar restrict deny lock limit confine hold stick chain tie".split()
+)
+
+
+def assigned_read(text: str, kinds: dict[str, bool]) -> str:
+    """`text` with a thing sent to a plate by a verb's passive or progressive said as "goes" (h262): "the
+    green apple is allocated to the pink plate", "green apple posted to the blue plate", "the orange is
+    moving into the yellow plate". The world's one action is placing, so a participle right between a
+    thing and "to" / "into" / "onto" and a plate says where it goes; "in" / "on" (a state: "is kept on"),
+    "not" between, and a verb that holds a thing back (`_HELD_BACK`) are left.
+
+    >>> assigned_read("The orange is allocated to the pink plate.", {"orange": False, "pink plate": True})
+    'The orange goes to the pink plate.'
+    """
+    if all(kinds.values()) or not any(kinds.values()):
+        return text
+    things = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
+    plates = mention_pattern([n for n, plate in kinds.items() if plate]).pattern
+    sent = re.compile(
+        rf"(?P<thing>{things})\s+(?:(?:is|are|gets|get|was|were|being)\s+)?(?P<verb>[a-z]+(?:ed|en|ing))\s+"
+        rf"(?P<to>into|onto|to)\s+(?=(?:the\s+)?{plates})",
+        re.IGNORECASE,
+    )
+
+    def goes(m: re.Match[str]) -> str:
+        lemmas = english_lemmas(m["verb"].lower()).get("VERB", ())
+        if not lemmas or any(lemma in _HELD_BACK for lemma in lemmas):
+            return m[0]
+        return f"{m['thing']} goes {m['to']} "
+
+    return sent.sub(goes, text)
 
 
 def _letter_frame_dropped(text: str, kinds: dict[str, bool]) -> str:
