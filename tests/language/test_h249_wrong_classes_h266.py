@@ -44,3 +44,21 @@ def test_an_order_between_groups_of_numbered_steps_is_refused_by_name(text):
     """Before: "do 1 n 2 first, 3 n 4 after" was read as the numbered turn, 1 < 2 < 3 < 4, at exit 0."""
     with pytest.raises(HTTError, match="say the steps' order"):
         step_order(text)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Chore chart. Zoe: put the mug in the sink. Finn: put the apple in the fridge. Zoe does hers first.",
+        "Chore chart, Sunday. Ava: put the mug in the sink. Sam: put the apple in the fridge. Sam goes first.",
+    ],
+)
+def test_an_order_said_by_a_chore_charts_person_is_refused_by_name(text):
+    """Before: the labels were read in turn and "Zoe does hers first" as nothing (1 < 2 < 3 at exit 0)."""
+    with pytest.raises(HTTError, match="by who does them"):
+        step_order(text)
+
+
+def test_a_first_said_of_a_thing_not_a_label_is_no_person_order():
+    text = "Zoe: put the mug in the sink. Finn: put the apple in the fridge. The apple goes first."
+    assert step_order(text) == text

@@ -93,11 +93,30 @@ def bullets_apart(text: str) -> str:
     return head + " ".join(f"{item}." for item in items if item)
 
 
+# an order said by the person a chore chart labels ("Zoe: A. Finn: B. Zoe again: C. Zoe does hers first"):
+# the labels were read in turn, A < B < C at exit 0 (h266); it is refused by name
+_PERSON_LABEL = re.compile(r"(?:^|(?<=[.!?:])\s+)(?P<name>[A-Z][a-z]+)(?:\s+again)?\s*:", re.M)
+_PERSON_ORDER = re.compile(
+    r"\b(?P<name>[A-Z][a-z]+)(?:'s\s+\w+|\s+(?:does|do)\s+(?:his|hers|theirs|her\s+\w+|his\s+\w+))?\s+"
+    r"(?:goes|go|comes|come|is|are)?\s*(?:first|last)\b"
+)
+
+
+def _person_order(text: str) -> None:
+    """Raises HTTError for an order said by a chore chart's person label (see `_PERSON_ORDER`)."""
+    labels = {m["name"] for m in _PERSON_LABEL.finditer(text)}
+    if len(labels) >= 2 and (m := _PERSON_ORDER.search(text)) and m["name"] in labels:
+        raise HTTError(
+            f"{m[0]!r} orders the tasks by who does them, which no task says: say which tasks come first"
+        )
+
+
 def step_order(text: str) -> str:
     """`text` with an order said by step number written out as the steps in that order (see the module
     docstring), a list of bullets as its sentences (`bullets_apart`); text with no such order comes back
     as it is. Raises HTTError naming what cannot be read."""
     text = bullets_apart(text)
+    _person_order(text)
     if len(_STEP.findall(text)) >= 2:
         text = _DASHED_ORDER.sub(". ", text)
     sentences = re.split(r"(?<=[.!?])\s+", text.strip())
