@@ -51,7 +51,11 @@ _SAID = (
 )
 # any other order said by step numbers ("2 before 1, and 4 last"): read in the steps' numbered turn, it was
 # the opposite of what was asked, so it is refused by name
-_ORDER_SAID = rf"(?:do\s+)?{_STEP_REF}\s+(?:(?:comes?|goes?)\s+)?(?:first|last|before|after)\b"
+# (or by a group of them, "do 1 n 2 first, 3 n 4 after": h266, read in turn as 1 < 2 < 3 < 4 at exit 0)
+_ORDER_SAID = (
+    rf"(?:do\s+)?{_STEP_REF}(?:\s*(?:,|and|n|&)\s*{_STEP_REF})*\s+(?:(?:comes?|goes?)\s+)?"
+    r"(?:first|last|before|after)\b"
+)
 _LOOSE = re.compile(rf"^{_ORDER_SAID}", re.I)
 # an order line set off by a dash after the last step ("1. A 2. B 3. C - do 2 before 3"): its own sentence
 _DASHED_ORDER = re.compile(rf"\s+[-\u2013\u2014]\s+(?={_ORDER_SAID})", re.I)
@@ -89,11 +93,30 @@ def bullets_apart(text: str) -> str:
     return head + " ".join(f"{item}." for item in items if item)
 
 
+# an order said by the person a chore chart labels ("Zoe: A. Finn: B. Zoe again: C. Zoe does hers first"):
+# the labels were read in turn, A < B < C at exit 0 (h266); it is refused by name
+_PERSON_LABEL = re.compile(r"(?:^|(?<=[.!?:])\s+)(?P<name>[A-Z][a-z]+)(?:\s+again)?\s*:", re.M)
+_PERSON_ORDER = re.compile(
+    r"\b(?P<name>[A-Z][a-z]+)(?:'s\s+\w+|\s+(?:does|do)\s+(?:his|hers|theirs|her\s+\w+|his\s+\w+))?\s+"
+    r"(?:goes|go|comes|come|is|are)?\s*(?:first|last)\b"
+)
+
+
+def _person_order(text: str) -> None:
+    """Raises HTTError for an order said by a chore chart's person label (see `_PERSON_ORDER`)."""
+    labels = {m["name"] for m in _PERSON_LABEL.finditer(text)}
+    if len(labels) >= 2 and (m := _PERSON_ORDER.search(text)) and m["name"] in labels:
+        raise HTTError(
+            f"{m[0]!r} orders the tasks by who does them, which no task says: say which tasks come first"
+        )
+
+
 def step_order(text: str) -> str:
     """`text` with an order said by step number written out as the steps in that order (see the module
     docstring), a list of bullets as its sentences (`bullets_apart`); text with no such order comes back
     as it is. Raises HTTError naming what cannot be read."""
     text = bullets_apart(text)
+    _person_order(text)
     if len(_STEP.findall(text)) >= 2:
         text = _DASHED_ORDER.sub(". ", text)
     sentences = re.split(r"(?<=[.!?])\s+", text.strip())
@@ -130,8 +153,10 @@ def step_order(text: str) -> str:
 
 def _steps_of(sentences: list[str], k: int) -> dict[int, str]:
     """The numbered steps of the text without its sentence `k`, where it numbers two or more (else none)."""
-    try:
-        steps = _steps(" ".join(sentences[:k] + sentences[k + 1 :]))
+    rest = " ".join(sentences[:k] + sentences[k + 1 :])
+    marks = list(_STEP.finditer(rest))
+    try:  # from the first step: a heading before it ("hey! 4 things pls:") holds no step
+        steps = _steps(rest[marks[0].start() :].lstrip() if marks else rest)
     except HTTError:
         return {}
     return steps if len(steps) > 1 else {}
@@ -160,6 +185,11 @@ def _in_turn(text: str) -> str:
         raise HTTError(f"the steps are numbered out of turn ({', '.join(map(str, steps))}); say their order")
     if _frees_the_steps(steps.values()):  # the numbers go, the remark that frees the order stays
         return ". ".join(steps.values()) + "."
+    if before and (frees := free_order_remarks(before)):
+        # "Checklist (any order): 1) A 2) B": the heading frees the steps; its remark goes in a sentence of
+        # its own after them, which the grammar reads (inside the heading it was left unread)
+        head = re.sub(r"\s*\(\s*\)|\s*,\s*(?=:)", "", before[: frees[0].start] + before[frees[0].end :])
+        return f"{head} " + ". ".join(steps.values()) + f". {frees[0].words[0].upper()}{frees[0].words[1:]}."
     # a step that frees what it lists goes in a sentence of its own: ", then B and C in any order" would
     # order C after nothing
     then = ". After that, " if any(free_order_remarks(w) for w in steps.values()) else ", then "
