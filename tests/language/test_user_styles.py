@@ -381,14 +381,14 @@ KNOWN_WRONG: set[str] = {
     "The pan gets cleaned later; put it on the stove for now.",
     "Put a fork in the glass and the cup on the counter.",
     "Put the bread on the counter, buttered.",
-    # h266's sets (paper_h266dev/held; held scored once, results/language/h266.md): "take the C to the counter.
-    # A potato slice goes in the fridge" puts the slice on the counter (read so at session 32's start too: a
-    # slice said as a subject after "take ... to" takes that place, not "in the fridge"); "A ... goes on the
-    # table afterwards" after two container pairs orders it after the last pair only
-    "Put the fork from the sink in the mug and take the mug to the side table. A rinsed lettuce slice goes in "
-    "the bin afterwards.",
-    "Put the butter knife in a pan and take the pan to the counter. A heated potato slice goes in the fridge "
-    "afterwards.",
+    # h266's sets (paper_h266dev/held; held scored once, results/language/h266.md): "take the C to the
+    # counter. A potato slice goes in the fridge" puts the slice on the counter (so at session 32's start
+    # too: a slice said as a subject after "take ... to" takes that place); "A ... goes on the table
+    # afterwards" after two container pairs orders it after the last pair only
+    "Put the fork from the sink in the mug and take the mug to the side table. A rinsed lettuce slice goes "
+    "in the bin afterwards.",
+    "Put the butter knife in a pan and take the pan to the counter. A heated potato slice goes in the "
+    "fridge afterwards.",
     "Put a lettuce slice on a plate and put the plate in the fridge. Put an apple slice in a pot and the pot on "
     "the counter. A chilled bread slice goes on the table afterwards.",
 }
