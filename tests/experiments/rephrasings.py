@@ -2994,3 +2994,33 @@ DEV_H262: dict[str, dict[int, list[str]]] = {
             "pleasant stay."],
     },
 }
+
+
+# h267 (session 32, issues 24 and 28): held out. Task 4's two stages in a voice's own labels ("Leg one ...
+# leg two", "Bed one / bed two", "Verse one / verse two"), chit-chat praising a person ("You're a gem"),
+# an outside event before the list ("Before the train departs, ...") and "It doesn't matter which one boards
+# first", in three voices of my own (a train conductor, a gardener, a choir director). Committed before any
+# rule changed, scored once at the end, unchanged.
+HELD_H267: dict[str, dict[int, list[str]]] = {
+    "train_conductor": {
+        2: ["Before the train departs, the green apple goes in the pink plate, the orange in the yellow "
+            "plate and the red apple in the blue plate. It doesn't matter which one boards first. You're a "
+            "gem."],
+        4: ["Leg one of the journey: the green apple and the orange go into the yellow plate, in either "
+            "order. Once both have boarded, leg two: the carrot and the red apple go into the blue plate, in "
+            "either order too."],
+    },
+    "gardener": {
+        1: ["Before the rain comes, put the green apple on the blue plate and the orange on the yellow "
+            "plate. You're a lifesaver!"],
+        4: ["Bed one: plant the green apple and the orange in the yellow plate, either one first. When both "
+            "are in, bed two: the carrot and the red apple in the blue plate, in any order."],
+    },
+    "choir_director": {
+        3: ["Put the carrot on the blue plate, the orange on the yellow plate, the green apple on the green "
+            "plate and the red apple on the pink plate. It doesn't matter which one sings first. Bravo, "
+            "maestro!"],
+        4: ["Verse one: the green apple and the orange go on the yellow plate, in either order. Only after "
+            "both are there, verse two: the carrot and the red apple go on the blue plate, in either order."],
+    },
+}
