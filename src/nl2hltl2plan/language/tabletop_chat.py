@@ -42,6 +42,7 @@ from nl2hltl2plan.language.content_words import free_order_phrase, phrase_list_p
 from nl2hltl2plan.language.courtesy import without_greetings
 from nl2hltl2plan.language.frame_drops import frames_dropped
 from nl2hltl2plan.language.handover_discourse import frame_words
+from nl2hltl2plan.language.request_times import deadlines_dropped
 from nl2hltl2plan.language.spelling import english_lemmas
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
@@ -129,6 +130,10 @@ def chat_read(text: str, kinds: dict[str, bool], dropped: list[str] | None = Non
     plate name in words -> is it a plate (a sign-off's name that is a word of one stays); what the general
     filler rule drops is added to `dropped`."""
     names = frozenset(w for name in kinds for w in name.lower().split())
+    # a deadline by an outside event ("Before the gates open, ...") is met by doing the tasks now, as in
+    # a household request (`request_times`); the phrase is said with the frames
+    said: list[str] = [] if dropped is None else dropped
+    text = deadlines_dropped(text, names, said, said)
     text = frames_dropped(_document_label_dropped(text), names, dropped)
     text = _FIND.sub(lambda m: f"{m['order']} you like", text)
     text = _RESTATED.sub(lambda m: _restated(m, names), text)
