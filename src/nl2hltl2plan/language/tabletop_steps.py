@@ -65,11 +65,14 @@ _REFERS_BACK = re.compile(
 
 
 # "Stage two, only when both of those are in:", "Phase 2, once they are all there:": a later label's
-# condition that what was placed just before is in restates the order the labels say already (h220)
+# condition that what was placed just before is in restates the order the labels say already (h220); so
+# does one said with the label's own verb and a voice's participle ("Quarter two opens only after both are
+# booked:", h267)
 _GROUP_DONE = re.compile(
-    rf"(?P<label>{_STEP_NOUN}\s+(?P<t>\w+))\s*,\s*(?:but\s+)?(?:only\s+)?(?:when|once|after|as\s+soon\s+as)\s+"
+    r"(?P<label>(?:[a-z]+)\s+(?P<t>\w+))(?:\s*,\s*|\s+(?:opens|starts|begins|comes)\s+)(?:but\s+)?(?:only\s+)?"
+    r"(?:when|once|after|as\s+soon\s+as)\s+"
     r"(?:both|all|the\s+two|they)(?:\s+of\s+(?:those|them|these))?\s+(?:are|have\s+been|'re)\s+"
-    r"(?:both\s+|all\s+)?(?:in|there|done|placed|in\s+place)\s*(?=[:.)\-])",
+    r"(?:both\s+|all\s+)?(?:in|there|done|placed|in\s+place|[a-z]+ed)\s*(?=[:.)\-])",
     re.IGNORECASE,
 )
 
