@@ -14,6 +14,8 @@ Read before any reader sees the text (`TabletopReader.as_read`), each as the pla
   clause's start, is no thing ("book" names no Book there);
 - "once that plate's ready / is full" (the plate just named, done) is "once they're all there" (h262; the
   words of done are `tabletop_chat.txt`'s `ready`);
+- "once both have arrived / boarded" (what was put, said as having arrived) is "once they're all there"
+  (h267; `tabletop_chat.txt`'s `arrived`);
 - "once you've got them both in there" (the one asked having placed them) is "once they're both there"
   (h229; `tabletop_chat.txt`'s `yours`);
 - a thing taken up again by a pronoun after a comma ("the orange, that one can go in the yellow plate") is
@@ -88,6 +90,12 @@ _PLATE_READY = re.compile(
     rf"{phrase_list_pattern('tabletop_chat.txt', 'ready')}\b",
     re.IGNORECASE,
 )
+# "once both have arrived": what was put, there
+_ARRIVED = re.compile(
+    r"\b(?P<head>when|once|after|as soon as)\s+(?:both|they|those|these|the two|all)(?:\s+of\s+(?:them|those))?"
+    rf"\s+(?:have|'ve)\s+(?:both\s+|all\s+)?{phrase_list_pattern('tabletop_chat.txt', 'arrived')}\b",
+    re.IGNORECASE,
+)
 
 # "the orange, that one can go ...": the thing taken up again by a pronoun
 _RESUMED = (
@@ -140,5 +148,6 @@ def chat_read(text: str, kinds: dict[str, bool], dropped: list[str] | None = Non
     text = _YOURS.sub(lambda m: f"{m['head']} they're {m['all'] or 'all'} there", text)  # "in there": there
     text = _ON_IT.sub(r"\g<head>there", text)
     text = _PLATE_READY.sub(r"\g<head> they're all there", text)
+    text = _ARRIVED.sub(r"\g<head> they're all there", text)
     text = _resumed(text, kinds)
     return without_greetings(text, lambda name: any(name.lower() in said.split() for said in kinds))
