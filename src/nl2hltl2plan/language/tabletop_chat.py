@@ -92,7 +92,8 @@ _PLATE_READY = re.compile(
 )
 # "once both have arrived": what was put, there
 _ARRIVED = re.compile(
-    r"\b(?P<head>when|once|after|as soon as)\s+(?:both|they|those|these|the two|all)(?:\s+of\s+(?:them|those))?"
+    r"\b(?P<head>when|once|after|as soon as)\s+(?:both|they|those|these|the two|all)"
+    r"(?:\s+of\s+(?:them|those))?"
     rf"\s+(?:have|'ve)\s+(?:both\s+|all\s+)?{phrase_list_pattern('tabletop_chat.txt', 'arrived')}\b",
     re.IGNORECASE,
 )

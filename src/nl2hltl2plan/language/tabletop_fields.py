@@ -49,7 +49,8 @@ def fields_read(text: str, kinds: dict[str, bool], dropped: list[str] | None = N
     """`text` with its records of labelled fields, "as follows" lists, labels that announce a list, ordered
     Markdown parts and "don't ... until then" read (see the module docstring); `kinds`: each name in words
     -> is it a plate; a label dropped is added to `dropped`."""
-    text = _list_labels_dropped(_records_paired(_qualifiers_dropped(text, kinds, dropped), kinds), kinds, dropped)
+    text = _records_paired(_qualifiers_dropped(text, kinds, dropped), kinds)
+    text = _list_labels_dropped(text, kinds, dropped)
     text = _AS_FOLLOWS.sub(lambda m: f"{m['verb']}{m['free'] or ''}:", text)
     text = _ORDER_LABEL.sub(_any_order_label, text)
     return label_remarks_read(_UNTIL_THEN.sub(_then_put, _parts_ordered(text)))
