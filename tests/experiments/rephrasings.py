@@ -2994,3 +2994,71 @@ DEV_H262: dict[str, dict[int, list[str]]] = {
             "pleasant stay."],
     },
 }
+
+
+# h267 (session 32, issues 24 and 28): held out. Task 4's two stages in a voice's own labels ("Leg one ...
+# leg two", "Bed one / bed two", "Verse one / verse two"), chit-chat praising a person ("You're a gem"),
+# an outside event before the list ("Before the train departs, ...") and "It doesn't matter which one boards
+# first", in three voices of my own (a train conductor, a gardener, a choir director). Committed before any
+# rule changed, scored once at the end, unchanged.
+HELD_H267: dict[str, dict[int, list[str]]] = {
+    "train_conductor": {
+        2: ["Before the train departs, the green apple goes in the pink plate, the orange in the yellow "
+            "plate and the red apple in the blue plate. It doesn't matter which one boards first. You're a "
+            "gem."],
+        4: ["Leg one of the journey: the green apple and the orange go into the yellow plate, in either "
+            "order. Once both have boarded, leg two: the carrot and the red apple go into the blue plate, in "
+            "either order too."],
+    },
+    "gardener": {
+        1: ["Before the rain comes, put the green apple on the blue plate and the orange on the yellow "
+            "plate. You're a lifesaver!"],
+        4: ["Bed one: plant the green apple and the orange in the yellow plate, either one first. When both "
+            "are in, bed two: the carrot and the red apple in the blue plate, in any order."],
+    },
+    "choir_director": {
+        3: ["Put the carrot on the blue plate, the orange on the yellow plate, the green apple on the green "
+            "plate and the red apple on the pink plate. It doesn't matter which one sings first. Bravo, "
+            "maestro!"],
+        4: ["Verse one: the green apple and the orange go on the yellow plate, in either order. Only after "
+            "both are there, verse two: the carrot and the red apple go on the blue plate, in either order."],
+    },
+}
+
+
+# h267's dev batch (session 32): the same classes in three voices of my own (a chef, a ship's captain, a
+# coach), looked at and mended against.
+DEV_H267: dict[str, dict[int, list[str]]] = {
+    "chef": {
+        1: ["Before service starts, put the green apple on the blue plate and the orange on the yellow "
+            "plate. You're a star."],
+        2: ["Green apple on the pink plate, orange on the yellow plate, red apple on the blue plate. It "
+            "doesn't matter which one ships first."],
+        4: ["Morning prep: the green apple and the orange into the yellow plate, either order. When both are "
+            "in, evening prep: the carrot and the red apple into the blue plate, in either order.",
+            "Course one: the green apple and the orange go on the yellow plate, either one first. Course two,"
+            " only after course one: the carrot and the red apple go on the blue plate, in any order."],
+    },
+    "ship_captain": {
+        1: ["Order up! The green apple on the blue plate and the orange on the yellow plate. Thanks, you're "
+            "a hero."],
+        3: ["Before we dock, the carrot goes on the blue plate, the orange on the yellow plate, the green "
+            "apple on the green plate and the red apple on the pink plate. It doesn't matter which one goes "
+            "out first. You're a champ."],
+        4: ["Phase one of the voyage: put the green apple and the orange in the yellow plate, either one "
+            "first. Once both are in, phase two: the carrot and the red apple go in the blue plate, in any "
+            "order.",
+            "Shift one: the green apple and the orange into the yellow plate, in either order. Shift two: the"
+            " carrot and the red apple into the blue plate, in either order."],
+    },
+    "coach": {
+        1: ["Before the whistle blows, the green apple goes to the blue plate and the orange to the yellow "
+            "plate."],
+        2: ["Green apple to the pink plate, orange to the yellow plate, red apple to the blue plate. It "
+            "doesn't matter which one lands first. Great job, champ!"],
+        4: ["Round one: the green apple and the orange go in the yellow plate, either order. Once both are "
+            "in, round two: the carrot and the red apple go in the blue plate, either order.",
+            "Half one: the green apple and the orange onto the yellow plate, in either order. Half two: the "
+            "carrot and the red apple onto the blue plate, in either order."],
+    },
+}

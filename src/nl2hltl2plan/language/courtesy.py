@@ -213,7 +213,7 @@ _CALLED = re.compile(
 _REPLY = re.compile(rf"{_OPENS}{courtesy_pattern('reply')}\s*[!.,]+\s*(?=\w)", re.I)
 # closing thanks and farewells, one or more, where the text ends ("Thanks!", "Love you, bye.", "Over.")
 _THANKS = re.compile(
-    rf"(?<=[.!?])(?:\s*{courtesy_pattern('closing', 'farewell')}\s*[!.,]*)+\s*$", re.IGNORECASE
+    rf"(?<=[.!?])(?:\s*{courtesy_pattern('closing', 'farewell', 'praise')}\s*[!.,]*)+\s*$", re.IGNORECASE
 )
 # a recorded message's opening ("Voicemail:", "Message after the beep:") and a radio call ("Kitchen unit, do
 # you read?", "Base to kitchen unit, come in."), each at a sentence's start: they ask for no task (h261)

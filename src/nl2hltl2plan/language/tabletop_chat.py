@@ -14,6 +14,8 @@ Read before any reader sees the text (`TabletopReader.as_read`), each as the pla
   clause's start, is no thing ("book" names no Book there);
 - "once that plate's ready / is full" (the plate just named, done) is "once they're all there" (h262; the
   words of done are `tabletop_chat.txt`'s `ready`);
+- "once both have arrived / boarded" (what was put, said as having arrived) is "once they're all there"
+  (h267; `tabletop_chat.txt`'s `arrived`);
 - "once you've got them both in there" (the one asked having placed them) is "once they're both there"
   (h229; `tabletop_chat.txt`'s `yours`);
 - a thing taken up again by a pronoun after a comma ("the orange, that one can go in the yellow plate") is
@@ -42,6 +44,7 @@ from nl2hltl2plan.language.content_words import free_order_phrase, phrase_list_p
 from nl2hltl2plan.language.courtesy import without_greetings
 from nl2hltl2plan.language.frame_drops import frames_dropped
 from nl2hltl2plan.language.handover_discourse import frame_words
+from nl2hltl2plan.language.request_times import deadlines_dropped
 from nl2hltl2plan.language.spelling import english_lemmas
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
@@ -87,6 +90,13 @@ _PLATE_READY = re.compile(
     rf"{phrase_list_pattern('tabletop_chat.txt', 'ready')}\b",
     re.IGNORECASE,
 )
+# "once both have arrived": what was put, there
+_ARRIVED = re.compile(
+    r"\b(?P<head>when|once|after|as soon as)\s+(?:both|they|those|these|the two|all)"
+    r"(?:\s+of\s+(?:them|those))?"
+    rf"\s+(?:have|'ve)\s+(?:both\s+|all\s+)?{phrase_list_pattern('tabletop_chat.txt', 'arrived')}\b",
+    re.IGNORECASE,
+)
 
 # "the orange, that one can go ...": the thing taken up again by a pronoun
 _RESUMED = (
@@ -129,11 +139,16 @@ def chat_read(text: str, kinds: dict[str, bool], dropped: list[str] | None = Non
     plate name in words -> is it a plate (a sign-off's name that is a word of one stays); what the general
     filler rule drops is added to `dropped`."""
     names = frozenset(w for name in kinds for w in name.lower().split())
+    # a deadline by an outside event ("Before the gates open, ...") is met by doing the tasks now, as in
+    # a household request (`request_times`); the phrase is said with the frames
+    said: list[str] = [] if dropped is None else dropped
+    text = deadlines_dropped(text, names, said, said)
     text = frames_dropped(_document_label_dropped(text), names, dropped)
     text = _FIND.sub(lambda m: f"{m['order']} you like", text)
     text = _RESTATED.sub(lambda m: _restated(m, names), text)
     text = _YOURS.sub(lambda m: f"{m['head']} they're {m['all'] or 'all'} there", text)  # "in there": there
     text = _ON_IT.sub(r"\g<head>there", text)
     text = _PLATE_READY.sub(r"\g<head> they're all there", text)
+    text = _ARRIVED.sub(r"\g<head> they're all there", text)
     text = _resumed(text, kinds)
     return without_greetings(text, lambda name: any(name.lower() in said.split() for said in kinds))

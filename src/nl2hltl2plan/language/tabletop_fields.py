@@ -49,7 +49,8 @@ def fields_read(text: str, kinds: dict[str, bool], dropped: list[str] | None = N
     """`text` with its records of labelled fields, "as follows" lists, labels that announce a list, ordered
     Markdown parts and "don't ... until then" read (see the module docstring); `kinds`: each name in words
     -> is it a plate; a label dropped is added to `dropped`."""
-    text = _list_labels_dropped(_records_paired(text, kinds), kinds, dropped)
+    text = _records_paired(_qualifiers_dropped(text, kinds, dropped), kinds)
+    text = _list_labels_dropped(text, kinds, dropped)
     text = _AS_FOLLOWS.sub(lambda m: f"{m['verb']}{m['free'] or ''}:", text)
     text = _ORDER_LABEL.sub(_any_order_label, text)
     return label_remarks_read(_UNTIL_THEN.sub(_then_put, _parts_ordered(text)))
@@ -105,6 +106,28 @@ _ANNOUNCED = re.compile(
 )
 _LABEL_KEEPS = phrase_words("tabletop_fields.txt", "announce_not")
 _COUNT = {w: n for n, w in enumerate("zero one two three four five six seven eight nine ten".split())}
+
+
+# "Step one of the regimen:", "Phase two of the voyage -": a step label's qualifier ("of" and one word) that
+# names no thing or plate is the voice's; it is dropped (said in the notes) and the label left (h267)
+_QUALIFIED = re.compile(
+    r"(?P<label>\b[a-z]+\s+(?:\d|one|two|three|four|first|second|third|fourth))"
+    r"(?P<of>\s+of\s+(?:the|this|our|my|your|today's)\s+[a-z]+)\s*(?=[:\-\u2013\u2014])",
+    re.IGNORECASE,
+)
+
+
+def _qualifiers_dropped(text: str, kinds: dict[str, bool], dropped: list[str] | None) -> str:
+    names = mention_pattern(kinds, re.IGNORECASE)
+
+    def label(m: re.Match[str]) -> str:
+        if names.search(m["of"]):
+            return m[0]
+        if dropped is not None:
+            dropped.append(m["of"].strip())
+        return m["label"]
+
+    return _QUALIFIED.sub(label, text)
 
 
 def _list_labels_dropped(text: str, kinds: dict[str, bool], dropped: list[str] | None) -> str:

@@ -15,6 +15,7 @@ from nl2hltl2plan.language.content_words import free_order_remarks, phrase_list_
 from nl2hltl2plan.language.tabletop_freed_steps import runs_freed
 from nl2hltl2plan.language.tabletop_wording import NUMBER_WORDS, free_order, frees_every_step
 
+# ("First delivery round:": one word may name the round, h267)
 # a label's place in turn: a digit, a number word or an ordinal (a step noun's also with a comma after it:
 # "step one, ...; step two, ..."), or (with a colon or bracket after it, so
 # that an article or "I" is not one) a letter or a roman numeral ("Part A:", "Phase II)")
@@ -24,7 +25,7 @@ _TURN = (
     r"(?:(?P<n1>\d|one|two|three|four|first|second|third|fourth)\s*[:.)\-,]|(?P<l1>[a-d]|i{1,3}|iv)\s*[:)])"
 )
 _LABEL = re.compile(
-    rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*{_TURN}|(?P<n2>first|second|third|fourth)\s+{_STEP_NOUN}"
+    rf"(?:^|(?<=[.;!?:,]))\s*(?:{_STEP_NOUN}\s*{_TURN}|(?P<n2>first|second|third|fourth)\s+(?:[a-z]+\s+)?{_STEP_NOUN}"
     r"\s*[:.)\-])\s*",
     re.IGNORECASE,
 )
@@ -65,11 +66,14 @@ _REFERS_BACK = re.compile(
 
 
 # "Stage two, only when both of those are in:", "Phase 2, once they are all there:": a later label's
-# condition that what was placed just before is in restates the order the labels say already (h220)
+# condition that what was placed just before is in restates the order the labels say already (h220); so
+# does one said with the label's own verb and a voice's participle ("Quarter two opens only after both are
+# booked:", h267)
 _GROUP_DONE = re.compile(
-    rf"(?P<label>{_STEP_NOUN}\s+(?P<t>\w+))\s*,\s*(?:but\s+)?(?:only\s+)?(?:when|once|after|as\s+soon\s+as)\s+"
+    r"(?P<label>(?:[a-z]+)\s+(?P<t>\w+))(?:\s*,\s*|\s+(?:opens|starts|begins|comes)\s+)(?:but\s+)?(?:only\s+)?"
+    r"(?:when|once|after|as\s+soon\s+as)\s+"
     r"(?:both|all|the\s+two|they)(?:\s+of\s+(?:those|them|these))?\s+(?:are|have\s+been|'re)\s+"
-    r"(?:both\s+|all\s+)?(?:in|there|done|placed|in\s+place)\s*(?=[:.)\-])",
+    r"(?:both\s+|all\s+)?(?:in|there|done|placed|in\s+place|[a-z]+ed)\s*(?=[:.)\-])",
     re.IGNORECASE,
 )
 
