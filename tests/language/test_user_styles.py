@@ -389,8 +389,8 @@ KNOWN_WRONG: set[str] = {
     "in the bin afterwards.",
     "Put the butter knife in a pan and take the pan to the counter. A heated potato slice goes in the "
     "fridge afterwards.",
-    "Put a lettuce slice on a plate and put the plate in the fridge. Put an apple slice in a pot and the pot on "
-    "the counter. A chilled bread slice goes on the table afterwards.",
+    "Put a lettuce slice on a plate and put the plate in the fridge. Put an apple slice in a pot and the pot "
+    "on the counter. A chilled bread slice goes on the table afterwards.",
 }
 
 
