@@ -78,3 +78,21 @@ def test_read_in_a_kitchen(kitchen, text, read):
 def test_a_state_no_task_makes_is_not_read_as_a_placement(kitchen):
     """ "a broken egg": no task breaks an egg into a place; the list is refused, never read without it."""
     assert outcome("A broken egg in the fridge and a warm apple slice on the counter.", kitchen) == "refused"
+
+
+@pytest.mark.parametrize(
+    "text, tasks",
+    [
+        # a slice said as the subject of "goes" after a sentence with "take ... to": before, that sentence's
+        # verb and place were carried over it and the slice went to the counter at exit 0
+        ("Take the pan to the counter. A potato slice goes in the fridge.",
+         ["place Pan -> CounterTop", "place Potato(sliced) -> Fridge"]),
+        ("Put the butter knife in a pan and take the pan to the counter. A heated potato slice goes in the "
+         "fridge afterwards.",
+         ["place_in_container ButterKnife in Pan -> CounterTop", "heat_place Potato(sliced) -> Fridge"]),
+    ],
+)  # fmt: skip
+def test_a_slice_said_as_the_subject_goes_where_it_is_said(text, tasks, world):
+    from household_readings import reading
+
+    assert reading(text, world("FloorPlan1"))[0] == tasks

@@ -336,8 +336,6 @@ KNOWN_WRONG: set[str] = {
     # "chill that too" read as heating, a destination carried over, a verbless list under one destination
     "Closing checklist (any order): 1) heat the potato from the fridge and throw it in the green bin 2) fork "
     "in the green cup, cup on the counter",
-    "Put the fork from the round table in the frying pan and take the pan to the round table. A heated potato"
-    " slice goes on the counter afterwards.",
     "Chore chart, Sunday. Zoe: wash the spatula next to the sink and lay it on the white table. Finn: rinse a"
     " slice of potato and leave it on the counter. Zoe again: chill the head of lettuce from the white table "
     "and put it on the counter. Zoe does hers first.",
@@ -381,14 +379,8 @@ KNOWN_WRONG: set[str] = {
     "The pan gets cleaned later; put it on the stove for now.",
     "Put a fork in the glass and the cup on the counter.",
     "Put the bread on the counter, buttered.",
-    # h266's sets (paper_h266dev/held; held scored once, results/language/h266.md): "take the C to the
-    # counter. A potato slice goes in the fridge" puts the slice on the counter (so at session 32's start
-    # too: a slice said as a subject after "take ... to" takes that place); "A ... goes on the table
+    # h266's held set (paper_h266held; scored once, results/language/h266.md): "A ... goes on the table
     # afterwards" after two container pairs orders it after the last pair only
-    "Put the fork from the sink in the mug and take the mug to the side table. A rinsed lettuce slice goes "
-    "in the bin afterwards.",
-    "Put the butter knife in a pan and take the pan to the counter. A heated potato slice goes in the "
-    "fridge afterwards.",
     "Put a lettuce slice on a plate and put the plate in the fridge. Put an apple slice in a pot and the pot "
     "on the counter. A chilled bread slice goes on the table afterwards.",
 }

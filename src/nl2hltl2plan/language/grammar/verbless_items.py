@@ -100,8 +100,11 @@ _HELD_AFTER = re.compile(rf"{_HELD}\s*$", re.I)
 
 def names_holder_before(text: str, at: int) -> bool:
     """Does a name end right before `at`, or a name and the thing it holds ("the pot with the knife in it
-    goes on the table": the pot goes there, with the knife in it)?"""
+    goes on the table": the pot goes there, with the knife in it), or a name and its slice ("a potato slice
+    goes in the fridge": left with "goes", the sentence took the verb of the one before it)?"""
     if names_object_before(text, at):
+        return True
+    if (cut := _SLICE_END.search(text[:at].rstrip())) is not None and names_object_before(text, cut.start()):
         return True
     held = _HELD_AFTER.search(text[:at])
     return held is not None and names_object_before(text, held.start()) and bool(find_mentions(held["held"]))
