@@ -29,9 +29,15 @@ def _any(words: frozenset[str]) -> str:
 
 
 @lru_cache(maxsize=1)
+def _words() -> dict[str, frozenset[str]]:
+    """`request_times.txt`, read once (`_outside` asks for its things at every phrase matched)."""
+    return word_categories("request_times.txt")
+
+
+@lru_cache(maxsize=1)
 def _phrases() -> tuple[re.Pattern[str], re.Pattern[str]]:
     """(a leading deadline phrase, a start phrase), each with its outside subject as group `who`."""
-    w = word_categories("request_times.txt")
+    w = _words()
     t = word_categories("frame_times.txt")
     when = rf"(?:(?:the|this|next|tonight'?s?)\s+)?(?:{_any(t['when'] | t['part'])})s?"
     clock = r"\d{1,2}(?:[:.]\d\d)?\s*(?:am|pm|o'?clock)\b|noon|midnight"
@@ -50,7 +56,7 @@ def _phrases() -> tuple[re.Pattern[str], re.Pattern[str]]:
 @lru_cache(maxsize=1)
 def _remarks() -> tuple[re.Pattern[str], re.Pattern[str]]:
     """(a sentence that thanks for a past time, a leading remark on the occasion before a request)."""
-    w = word_categories("request_times.txt")
+    w = _words()
     thanks = r"^\s*(?:thanks|thank\s+you)(?:\s+(?:again|so\s+much))*\s+for\s+"
     thanks += rf"(?:{_any(w['past'])})\s*[.!]*\s*$"
     asking = r"(?=(?:could|can|would|will)\s+you\b|please\b)"
@@ -61,7 +67,7 @@ def _outside(m: re.Match[str], names: frozenset[str]) -> bool:
     """Is the phrase's subject (if it has one) no thing of the world, none said before ("they") and not
     the request's own "you"?"""
     who = set((m["who"] or "").lower().split())
-    return not (who & (names | word_categories("request_times.txt")["thing"] | {"you"}))
+    return not (who & (names | _words()["thing"] | {"you"}))
 
 
 def deadlines_dropped(text: str, names: frozenset[str], said: list[str], frames: list[str]) -> str:
