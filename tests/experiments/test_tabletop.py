@@ -47,6 +47,13 @@ def refused(instruction: str) -> bool:
         return cli_main(["plan", instruction, "--world", "tabletop"]) != 0
 
 
+def assert_read_right_or_refused(batch: dict[int, list[str]]) -> None:
+    """Each rephrasing of a batch's voice (task -> texts) gives its task's tasks and order, or is refused."""
+    for task_id, texts in batch.items():
+        for text in texts:
+            assert refused(text) or signature(text) == signature(TASKS[task_id].instruction), text
+
+
 def test_layouts_are_seeded_distinct_and_validated():
     a, b = draw_layout(1), draw_layout(2)
     assert a == draw_layout(1) and a != b
