@@ -29,6 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from nl2hltl2plan.errors import DataError
+from nl2hltl2plan.language.grounding import find_mentions
 
 C = 1.0  # inverse regularisation, chosen by the group 5-fold check (0.1-3 within 1.5 points)
 _FLOOR = 1e-3  # the slot model's probability is clipped here (confidences are reported to 3 decimals)
@@ -82,8 +83,6 @@ def size_said(clause: str, ranked: list[tuple[str, float]]) -> list[tuple[str, f
     >>> size_said("put it on the little table", [("DiningTable", 0.7), ("SideTable", 0.3)])
     [('SideTable', 0.7), ('DiningTable', 0.3)]
     """
-    from nl2hltl2plan.language.grounding import find_mentions
-
     types = {t for t, _ in ranked}
     sizes = _size_words()
     for m in find_mentions(clause):
