@@ -3062,3 +3062,60 @@ DEV_H267: dict[str, dict[int, list[str]]] = {
             "carrot and the red apple onto the blue plate, in either order."],
     },
 }
+
+
+# h270's held-out batch (session 33, issues 28 and 24): four rephrasings of each of the paper's four tabletop
+# tasks, one per voice (a driving instructor, a hairdresser, a casino croupier, a tennis umpire), voices no
+# batch above uses; written without reading the reader's code or trying any line, committed before any
+# scoring and scored once, unchanged (results/experiments/h270.md). The expected reading of each line is its
+# task's ground truth (suites/tabletop/tabletop_tasks.json), as listed above HELD_H210.
+HELD_H270: dict[str, dict[int, list[str]]] = {
+    "driving_instructor": {
+        1: ["Right, hands at ten and two, nice and steady. Move the green apple onto the blue plate and "
+            "the orange onto the yellow plate. Check your mirrors and off you go."],
+        2: ["Today's route has three stops: the green apple pulls into the pink plate, the orange into "
+            "the yellow plate and the red apple into the blue plate. Take the stops in whatever order "
+            "feels comfortable."],
+        3: ["Last lesson before your test. Park the carrot in the blue plate, the orange in the yellow "
+            "plate, the green apple in the green plate and the red apple in the pink plate. You pick the "
+            "order, just keep it smooth."],
+        4: ["Two junctions on this drive. At the first one, the green apple and the orange go into the "
+            "yellow plate, either one first. Don't pull off towards the second until both are in; there "
+            "the carrot and the red apple go into the blue plate, in any order. Well driven."],
+    },
+    "hairdresser": {
+        1: ["Sit back and relax, love. All I need is the green apple on the blue plate and the orange on "
+            "the yellow plate. Looking gorgeous!"],
+        2: ["Three to do before lunch: the green apple into the pink plate, the orange into the yellow "
+            "plate, the red apple into the blue plate. Whoever goes first, I'm not fussed."],
+        3: ["Busy Saturday in the salon! Pop the carrot in the blue plate, the orange in the yellow "
+            "plate, the green apple in the green plate and the red apple in the pink plate. Do them in "
+            "any order, sweetie."],
+        4: ["Wash before cut, you know how it goes. So the green apple and the orange go in the yellow "
+            "plate first, whichever of the two you like. Only when they're both in there do the carrot "
+            "and the red apple go in the blue plate, again in any order."],
+    },
+    "croupier": {
+        1: ["Place your bets, please. The green apple goes on the blue plate and the orange goes on the "
+            "yellow plate. No more bets."],
+        2: ["Three chips to place at this table: red apple onto the blue plate, green apple onto the "
+            "pink plate, orange onto the yellow plate. Place them in any order, the house doesn't mind."],
+        3: ["New shoe, new deal. Deal the carrot onto the blue plate, the orange onto the yellow plate, "
+            "the green apple onto the green plate and the red apple onto the pink plate, in any order you "
+            "please. Good luck at the table."],
+        4: ["First round: the green apple and the orange land in the yellow plate, in either order. Once "
+            "both are down, second round: the carrot and the red apple land in the blue plate, the order "
+            "again up to you. Rien ne va plus."],
+    },
+    "tennis_umpire": {
+        1: ["Quiet, please. Orange to the yellow plate, green apple to the blue plate. Play."],
+        2: ["New balls, please. The green apple goes into the pink plate, the orange into the yellow "
+            "plate and the red apple into the blue plate; the order of play is your choice."],
+        3: ["Time. The carrot into the blue plate, the orange into the yellow plate, the green apple into "
+            "the green plate and the red apple into the pink plate. No order is called, so take them "
+            "however you like."],
+        4: ["First set: the orange and the green apple into the yellow plate, in whichever order. The second "
+            "set starts only after both of those are in: the carrot and the red apple into the blue "
+            "plate, either order again. Thank you, players."],
+    },
+}
