@@ -274,7 +274,7 @@ def _print_human(outcome: Any) -> None:
     note = outcome.idle_note()
     if note:
         print(f"  {note}")
-    for choice in outcome.place_choices():  # "in the fridge or the microwave": which one, and that it was open
+    for choice in outcome.place_choices():  # "the fridge or the microwave": which, and that either does
         print(f"  {choice.describe()}")
 
 

@@ -23,8 +23,8 @@ from pydantic import BaseModel
 
 from nl2hltl2plan.domain.plan_events import PlanEvent
 from nl2hltl2plan.domain.task_kinds import camel_words
-from nl2hltl2plan.errors import WorldError
-from nl2hltl2plan.language.grounding import AffordanceLookup, Mention, find_mentions, tokens
+from nl2hltl2plan.errors import NoPlaceError
+from nl2hltl2plan.language.grounding import AffordanceLookup, Mention, alfred_lookup, find_mentions, tokens
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.logic.atom import Atom
@@ -42,6 +42,7 @@ class PlaceChoice:
     said: str
     first: tuple[str, ...]
     second: tuple[str, ...]
+    read: tuple[str, ...]  # the types of the place the grammar reads (the first the world has)
     cuts: tuple[tuple[int, int], ...]
 
 
@@ -55,24 +56,26 @@ def _words() -> dict[str, tuple[tuple[str, ...], ...]]:
     return {k: tuple(sorted(v, key=len, reverse=True)) for k, v in out.items()}
 
 
-def split_choices(text: str, look: AffordanceLookup | None) -> tuple[str, list[PlaceChoice]]:
+def split_choices(
+    text: str, look: AffordanceLookup | None, scene: str = "the scene"
+) -> tuple[str, list[PlaceChoice]]:
     """The text with each choice's "or <second place>" (and a closing "whichever") cut, and the choices.
     A choice needs a placing word before the first place, the second named right after "or" (an article
     or a placing word between) and not placed itself ("or the apple in the sink" is another task), and
-    both a receptacle of the scene (`look`; None: no scene, no choice is read)."""
+    both receptacles (ALFRED's facts). The grammar reads the first place the world has (`look`; None: no
+    scene, no choice is read); where it has neither, NoPlaceError names them (exit 1)."""
     if look is None:
         return text, []
     toks = tokens(text)
     mentions = [m for m in find_mentions(text) if not m.entry.generic]
     choices: list[PlaceChoice] = []
-    for i, (word, at, end) in enumerate(toks):
-        if word != "or":
-            continue
-        left = next((m for m in reversed(mentions) if m.end <= i), None)
+    for i, (word, at, _) in enumerate(toks):
+        left = next((m for m in reversed(mentions) if m.end <= i), None) if word == "or" else None
         right = next((m for m in mentions if m.start > i), None)
         if left is None or right is None or not _GAP.fullmatch(text[left.char_end : at]):
             continue
-        if _phrase_before(toks, left.start, "place") is None or not _only(toks, i + 1, right.start, "between"):
+        start = _phrase_before(toks, left.start, "place")
+        if start is None or not _only(toks, i + 1, right.start, "between"):
             continue
         if not (_a_place(left, look) and _a_place(right, look)):
             continue
@@ -80,12 +83,18 @@ def split_choices(text: str, look: AffordanceLookup | None) -> tuple[str, list[P
         if closing is None and right.end < len(toks) and (toks[right.end][0],) in _words()["place"]:
             continue
         stop = right.char_end if closing is None else closing
-        start = _phrase_before(toks, left.start, "place")
         k = next(k for k, t in enumerate(toks) if t[1] == start)
-        cuts = [(left.char_end, stop)]
+        said = text[start : right.char_end]
+        if _in_world(left, look):  # read "in the fridge", cut "or the microwave"
+            cuts, read = [(left.char_end, stop)], left.entry.types
+        elif _in_world(right, look):  # read "in the dresser", cut "the bathtub or"
+            cuts, read = [(toks[k + 1][1], right.char_start), (right.char_end, stop)], right.entry.types
+        else:
+            lack = " or ".join(m.entry.canonical for m in (left, right))
+            raise NoPlaceError(f"none of the places of {said!r} is in {scene}: no {lack} there")
         if k > 0 and toks[k - 1][0] == "either":  # "either in the fridge or ...": read with the choice
             cuts.insert(0, (toks[k - 1][1], start))
-        choices.append(PlaceChoice(text[start : right.char_end], left.entry.types, right.entry.types, tuple(cuts)))
+        choices.append(PlaceChoice(said, left.entry.types, right.entry.types, read, tuple(cuts)))
     if not choices:
         return text, []
     kept, last = [], 0
@@ -96,9 +105,17 @@ def split_choices(text: str, look: AffordanceLookup | None) -> tuple[str, list[P
     return "".join(kept), choices
 
 
+def _in_world(m: Mention, look: AffordanceLookup) -> bool:
+    return any(look(t) is not None for t in m.entry.types)
+
+
 def _a_place(m: Mention, look: AffordanceLookup) -> bool:
-    """Whether a type the mention names is a receptacle of the scene."""
-    return any((a := look(t)) is not None and a.receptacle for t in m.entry.types)
+    """Whether a type the mention names is a receptacle (the scene's, else by ALFRED's facts)."""
+    facts = alfred_lookup()
+    return any(
+        (a := look(t) or (facts(t) if facts is not None else None)) is not None and a.receptacle
+        for t in m.entry.types
+    )
 
 
 def _phrase_before(toks: list[tuple[str, int, int]], i: int, tag: str) -> int | None:
@@ -137,16 +154,18 @@ def widen(res: LanguageResult, said: str, choices: list[PlaceChoice], world: Wor
     taken, WorldError names them all. A choice no task's destination holds is left to check 1."""
     tasks, notes = list(res.tasks), list(res.assumptions)
     for c in choices:
-        hit = [k for k, t in enumerate(tasks) if set(t.receptacle or ()) & set(c.first)]
+        hit = [k for k, t in enumerate(tasks) if set(t.receptacle or ()) & set(c.read)]
         if len(hit) != 1:
             continue
         task = tasks[hit[0]]
-        first = list(task.receptacle or ())
-        second = [t for t in c.second if world is None or world.instances(t)]
-        places = [first, second or list(c.second[:1])]
+        places = [
+            list(task.receptacle or ()) if said is c.read else [t for t in said if world is None or
+                                                                   world.instances(t)] or list(said[:1])
+            for said in (c.first, c.second)
+        ]  # fmt: skip
         possible, why = _possible(task, places, world)
         if not possible:
-            raise WorldError(f"none of the places of {c.said!r} can be taken: {'; '.join(why)}")
+            raise NoPlaceError(f"none of the places of {c.said!r} can be taken: {'; '.join(why)}")
         if why:
             notes.append(f"{c.said!r}: either place was allowed; {'; '.join(why)}, so the other is used")
         receptacle = list(dict.fromkeys(t for place in possible for t in place))
@@ -168,7 +187,7 @@ def _possible(
     for place in places:
         lack = task.model_copy(update={"receptacle": place, "places": None}).missing(world)
         if lack:
-            why.append(f"{' or '.join(place)}: {'; '.join(x.split(': ', 1)[-1] for x in lack)}")
+            why.append("; ".join(x.split(": ", 1)[-1] for x in lack))
         else:
             keep.append(place)
     return keep, why

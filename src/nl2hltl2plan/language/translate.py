@@ -158,7 +158,7 @@ def translate(
             return None if negations else reader.reread(instruction, backend)
 
         # "in the fridge or the microwave": read with the first place, then the task takes either
-        choice_text, either = split_choices(rest, look)
+        choice_text, either = split_choices(rest, look, scene or "the scene")
         try:
             res = _parse(backend, choice_text, grounder, strict, look, world, instances)
             if either:
