@@ -32,6 +32,7 @@ from nl2hltl2plan.worlds.world import World
 
 _WORDS = Path(__file__).with_name("place_choice_words.txt")
 _GAP = re.compile(r"[\s,]*")
+_HOUSEHOLD = frozenset({"alfred", "demo"})
 
 
 @dataclass(frozen=True)
@@ -56,16 +57,16 @@ def _words() -> dict[str, tuple[tuple[str, ...], ...]]:
     return {k: tuple(sorted(v, key=len, reverse=True)) for k, v in out.items()}
 
 
-def split_choices(
-    text: str, look: AffordanceLookup | None, scene: str = "the scene"
-) -> tuple[str, list[PlaceChoice]]:
+def split_choices(text: str, world: object, look: AffordanceLookup | None) -> tuple[str, list[PlaceChoice]]:
     """The text with each choice's "or <second place>" (and a closing "whichever") cut, and the choices.
     A choice needs a placing word before the first place, the second named right after "or" (an article
     or a placing word between) and not placed itself ("or the apple in the sink" is another task), and
     both receptacles (ALFRED's facts). The grammar reads the first place the world has (`look`; None: no
-    scene, no choice is read); where it has neither, NoPlaceError names them (exit 1)."""
-    if look is None:
+    scene, no choice is read); where it has neither, NoPlaceError names them (exit 1). Household worlds
+    only (`world.kind`): the tabletop and multi-arm worlds keep refusing a choice (docs/language.md)."""
+    if look is None or getattr(world, "kind", None) not in _HOUSEHOLD:
         return text, []
+    scene = getattr(world, "name", "the scene")
     toks = tokens(text)
     mentions = [m for m in find_mentions(text) if not m.entry.generic]
     choices: list[PlaceChoice] = []

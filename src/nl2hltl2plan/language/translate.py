@@ -157,10 +157,8 @@ def translate(
         def reread() -> LanguageResult | None:  # a world's rereading reads no negation: not asked then
             return None if negations else reader.reread(instruction, backend)
 
-        # "in the fridge or the microwave": read with the first place, then the task takes either (household
-        # worlds only: the tabletop and multi-arm worlds keep refusing a choice, docs/language.md)
-        household = isinstance(world, World) and world.kind in ("alfred", "demo")
-        choice_text, either = split_choices(rest, look if household else None, scene or "the scene")
+        # "in the fridge or the microwave": read with the first place, then the task takes either
+        choice_text, either = split_choices(rest, world, look)
         try:
             res = _parse(backend, choice_text, grounder, strict, look, world, instances)
             if either:
