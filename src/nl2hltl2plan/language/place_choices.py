@@ -26,6 +26,7 @@ from nl2hltl2plan.domain.task_kinds import camel_words
 from nl2hltl2plan.errors import NoPlaceError
 from nl2hltl2plan.language.grounding import AffordanceLookup, Mention, alfred_lookup, find_mentions, tokens
 from nl2hltl2plan.language.result import LanguageResult
+from nl2hltl2plan.language.spec_builder import spec_name
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.worlds.world import World
@@ -144,7 +145,7 @@ def _closing(toks: list[tuple[str, int, int]], i: int) -> int | None:
     """The end of a closing "whichever (is closer)" right after token `i`, else None."""
     for phrase in _words()["closing"]:
         got = toks[i : i + len(phrase)]
-        if tuple(w for w, _, _ in got) == phrase and len(got) == len(phrase):
+        if tuple(w for w, _, _ in got) == phrase:
             return got[-1][2]
     return None
 
@@ -152,18 +153,18 @@ def _closing(toks: list[tuple[str, int, int]], i: int) -> int | None:
 def widen(res: LanguageResult, said: str, choices: list[PlaceChoice], world: World | None) -> LanguageResult:
     """The reading of the cut text with each choice's task given both places, and the whole text back.
     A place the world cannot take for the task is dropped, said in `assumptions`; where no place can be
-    taken, WorldError names them all. A choice no task's destination holds is left to check 1."""
+    taken, NoPlaceError names them all (exit 1). A choice no task's destination holds is left to check 1."""
     tasks, notes = list(res.tasks), list(res.assumptions)
     for c in choices:
         hit = [k for k, t in enumerate(tasks) if set(t.receptacle or ()) & set(c.read)]
         if len(hit) != 1:
             continue
         task = tasks[hit[0]]
-        places = [
-            list(task.receptacle or ()) if said is c.read else [t for t in said if world is None or
-                                                                   world.instances(t)] or list(said[:1])
-            for said in (c.first, c.second)
-        ]  # fmt: skip
+        places = [  # the place read keeps the grammar's types; the other, those the world has
+            list(task.receptacle or ()) if named is c.read
+            else [t for t in named if world is None or world.instances(t)] or list(named[:1])
+            for named in (c.first, c.second)
+        ]
         possible, why = _possible(task, places, world)
         if not possible:
             raise NoPlaceError(f"none of the places of {c.said!r} can be taken: {'; '.join(why)}")
@@ -211,12 +212,12 @@ def chosen_places(
     tasks: list[BaseTaskSpec], leaf_task: dict[str, str], events: list[PlanEvent]
 ) -> list[ChosenPlace]:
     """Per task with a choice of places, which one the plan's last put of that task's leaves took.
-    `leaf_task`: HTT leaf id -> base-task id; events name leaves as their spec names (`task<id>`)."""
+    `leaf_task`: HTT leaf id -> base-task id; events name leaves by their spec names (`spec_name`)."""
     out = []
     for t in tasks:
         if not t.places:
             continue
-        leaves = {f"task{leaf}" for leaf, tid in leaf_task.items() if tid == t.id}
+        leaves = {spec_name(leaf) for leaf, tid in leaf_task.items() if tid == t.id}
         puts = [a for e in events if e.task in leaves and (a := Atom.read(e.atom)) is not None]
         took = [a.args[-1] for a in puts if a.verb == "put" and a.args[-1] in (t.receptacle or ())]
         allowed = [place[0] for place in t.places]
