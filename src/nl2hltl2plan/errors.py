@@ -8,6 +8,8 @@ escaping is a bug.
 class Nl2Hltl2PlanError(Exception):
     """Base class: a problem with the user's input or environment, with a readable message."""
 
+    exit_status = 2  # the CLI's status for it: bad input, unless a subclass is a definite "no"
+
 
 class FormulaError(Nl2Hltl2PlanError):
     """An LTL formula that cannot be parsed, is not sc-LTL, or cannot be translated in time."""
@@ -32,6 +34,13 @@ class DataError(Nl2Hltl2PlanError):
 
 class WorldError(Nl2Hltl2PlanError):
     """A world/scene problem: unknown floor plan, object not in the scene, unreachable object."""
+
+
+class NoPlaceError(WorldError):
+    """None of the places a choice allows ("the fridge or the microwave") can be taken in the world: a
+    definite "no" (exit 1), as an infeasible plan is."""
+
+    exit_status = 1
 
 
 class PlanningError(Nl2Hltl2PlanError):

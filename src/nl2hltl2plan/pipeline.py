@@ -28,6 +28,7 @@ from nl2hltl2plan.domain.plurals import Plurals
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.backends import Backend
 from nl2hltl2plan.language.llm.client import LLMClient
+from nl2hltl2plan.language.place_choices import ChosenPlace, chosen_places
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
 from nl2hltl2plan.language.suggest import not_understood
 from nl2hltl2plan.language.translate import ActionSource, Chooser, LtlSource, translate
@@ -225,7 +226,13 @@ class Outcome:
             "ltl_checks": lang.ltl_checks,
             "llm_calls": lang.llm_calls,
             "idle_note": self.idle_note(),
+            "place_choices": [c.model_dump(mode="json") for c in self.place_choices()],
         }
+
+    def place_choices(self) -> list[ChosenPlace]:
+        """Each task the user allowed several places for ("the fridge or the microwave"), and the one the
+        checked plan took (`language.place_choices`)."""
+        return chosen_places(self.language.tasks, self.language.leaf_task, self.result.events)
 
 
 def run(

@@ -32,5 +32,8 @@ def test_a_single_noun_at_the_end_addresses_the_listener_and_is_said() -> None:
 
 @pytest.mark.data
 def test_a_choice_left_to_the_robot_is_not_dropped_as_a_vocative() -> None:
-    with pytest.raises(Nl2Hltl2PlanError, match="a choice between objects"):
-        _read("put the egg in the fridge, or the sink, whichever")
+    # since h274 a choice between places is read: the "whichever" closes it (either place will do)
+    res = _read("put the egg in the fridge, or the sink, whichever")
+    assert [t.places for t in res.tasks] == [[["Fridge"], ["SinkBasin"]]] and not res.unparsed
+    with pytest.raises(Nl2Hltl2PlanError, match="whichever"):  # a choice of objects: refused, named
+        _read("put the egg or the apple in the fridge, whichever")

@@ -390,6 +390,9 @@ KNOWN_WRONG: set[str] = {
     "put all the spray bottles in the cabinet under the sink and wash a cloth and put it on the toilet",
     "put a new roll of toilet paper on the holder, before that put two spray bottles in the cabinet",
     "put 2 soap bottles and a spray bottle on the toilet. the rest of the spray bottles go in the cabinet",
+    # h274's held set (choices_h274held; scored once, results/language/h274.md): "towel" is read as the
+    # HandTowel, since ALFRED puts no Towel on a shelf or in a cart; its truth says Towel (grounding class)
+    "put the towel on the shelf or in the cart",
 }
 
 

@@ -274,6 +274,8 @@ def _print_human(outcome: Any) -> None:
     note = outcome.idle_note()
     if note:
         print(f"  {note}")
+    for choice in outcome.place_choices():  # "the fridge or the microwave": which, and that either does
+        print(f"  {choice.describe()}")
 
 
 def _write_outputs(folder: Path, outcome: Any, payload: dict[str, Any]) -> None:

@@ -99,7 +99,7 @@ def _run(argv: list[str] | None) -> int:
         raise
     except Nl2Hltl2PlanError as exc:
         print(f"error: {_one_line(str(exc))}", file=sys.stderr)
-        return 2
+        return exc.exit_status
     except OSError as exc:  # a path the user gave that cannot be read or written
         where = f" {exc.filename}" if exc.filename else ""
         print(f"error: cannot use{where}: {exc.strerror or exc}", file=sys.stderr)

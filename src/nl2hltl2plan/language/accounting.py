@@ -140,7 +140,7 @@ def account(
     out += closed_after_placing(instruction, mentions, parse) + either_place(instruction, mentions, parse)
     out += returns_and_repeats(instruction, mentions, parse)
     out += other_instances(instruction, mentions, parse, instances)
-    out += vague_words(instruction, mentions) + started(instruction, parse)
+    out += vague_words(instruction, mentions, any(t.places for t in tasks)) + started(instruction, parse)
     out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
     out += one_of_several(instruction, mentions, parse, instances)
     out += under_a_place(instruction, mentions, parse) + lamps_off(toks, parse)

@@ -119,6 +119,8 @@ def either_place(instruction: str, mentions: list[Mention], parse: ParseUsage) -
             continue
         said = [x for x in mentions if x.char_end <= m.start()]
         for x in [x for x in said if not _END.search(instruction, x.char_end, m.start())]:
+            if _read_as_choice(parse, set(x.entry.types), set(right.entry.types)):
+                break
             if _places_of_one_thing(parse, set(x.entry.types), set(right.entry.types)):
                 out.append(Unread(instruction[x.char_start : right.char_end], "place", _CHOICE))
                 break
@@ -135,4 +137,13 @@ def _places_of_one_thing(parse: ParseUsage, one: set[str], other: set[str]) -> b
         and set(a.object) & set(b.object)
         for a in parse.tasks
         for b in parse.tasks
+    )
+
+
+def _read_as_choice(parse: ParseUsage, one: set[str], other: set[str]) -> bool:
+    """Whether one task takes its thing to either place (`place_choices`: "the fridge or the microwave")."""
+    return any(
+        any(one & set(p) for p in t.places) and any(other & set(p) for p in t.places)
+        for t in parse.tasks
+        if t.places
     )

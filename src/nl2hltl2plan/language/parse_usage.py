@@ -71,6 +71,9 @@ class ParseUsage:
         out = []
         for t in self.tasks:
             for role in slots_of(t.kind):
+                if role == "receptacle" and t.places:  # "the fridge or the microwave": a slot per place said
+                    out += [(t.id, role, frozenset(place)) for place in t.places]
+                    continue
                 types = set(getattr(t, role) or [])
                 if "LightSwitch" in types:
                     types |= LAMPS  # "the light(s)" of a room is its light switch

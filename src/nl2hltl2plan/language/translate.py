@@ -47,6 +47,7 @@ from nl2hltl2plan.language.negations import (
     spec_constraints,
 )
 from nl2hltl2plan.language.parsers import PARSERS, Parser
+from nl2hltl2plan.language.place_choices import split_choices, widen
 from nl2hltl2plan.language.referents import check_referents
 from nl2hltl2plan.language.restated_tasks import joined_restatements
 from nl2hltl2plan.language.result import Ambiguity, LanguageResult
@@ -156,8 +157,12 @@ def translate(
         def reread() -> LanguageResult | None:  # a world's rereading reads no negation: not asked then
             return None if negations else reader.reread(instruction, backend)
 
+        # "in the fridge or the microwave": read with the first place, then the task takes either
+        choice_text, either = split_choices(rest, world, look)
         try:
-            res = _parse(backend, rest, grounder, strict, look, world, instances)
+            res = _parse(backend, choice_text, grounder, strict, look, world, instances)
+            if either:
+                res = widen(res, rest, either, world if isinstance(world, World) else None)
             if negations:
                 res = _keep_negations(res, instruction, negations, grounder)
             picked = dict(choices or {})

@@ -91,7 +91,7 @@ _QUESTION = re.compile(
 )
 
 
-def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
+def vague_words(instruction: str, mentions: list[Mention], chosen: bool = False) -> list[Unread]:
     """What no base task can take: a question ("is the apple in the fridge?"), a vague amount of a plural
     ("some apples", "the rest"), a vague place ("put it away", "anywhere but the sofa"), a duration or a
     clock time ("for two minutes", "set it for 7"), waiting on a state ("when the microwave is
@@ -126,7 +126,12 @@ def vague_words(instruction: str, mentions: list[Mention]) -> list[Unread]:
     chore = "a chore with no thing: say what to put where"
     out += [Unread(m[0], "action", chore) for m in _CHORE.finditer(lowered)]
     out += [Unread(m.group(0), "count", "no base task takes a time") for m in _TIME.finditer(lowered)]
-    out += [Unread(m[0], "place", "a choice left open: say which one") for m in _CHOICE.finditer(lowered)]
+    out += [
+        Unread(m[0], "place", "a choice left open: say which one")
+        for m in _CHOICE.finditer(lowered)
+        # "in the sink or on the counter, whichever": the choice a task reads (`place_choices`, `chosen`)
+        if not (chosen and re.search(r"\bor\b", lowered[sentence_start(lowered, m.start()) : m.start()]))
+    ]
     out += [
         Unread(m.group(0), "condition", "an optional step: the spec requires every task; say it or drop it")
         for m in _OPTIONAL.finditer(lowered)

@@ -79,6 +79,9 @@ class BaseTask(BaseModel):
     receptacle: list[str] | None = None
     light: list[str] | None = None
     state: State | None = None  # the state a set_state task brings its object into
+    # "in the fridge or the microwave": the places the user allowed either of, as said (each its types);
+    # `receptacle` holds those the world can take, and the leaf's disjunction lets the planner pick
+    places: list[list[str]] | None = Field(default=None, exclude_if=lambda v: v is None)
 
     def summary(self) -> str:
         """One readable line, e.g. `clean_place Potato(sliced) -> Fridge`."""
