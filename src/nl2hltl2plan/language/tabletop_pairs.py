@@ -28,8 +28,8 @@ from nl2hltl2plan.language.content_words import Unread, take_backs, vocabulary
 from nl2hltl2plan.language.frame_filler import frame_note
 from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
-from nl2hltl2plan.language.headings import answered
 from nl2hltl2plan.language.htt_build import build_htt
+from nl2hltl2plan.language.questions import answered
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_chat import chat_read
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
