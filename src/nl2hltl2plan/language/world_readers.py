@@ -9,7 +9,7 @@ and knows no world by name:
   worlds read questions and answers as the instruction they state, `questions.answered`; elsewhere the
   lines are joined with spaces);
 - `prepared`: the text as the shared grammar is to read it, or a refusal (the tabletop world refuses a
-  statement of where something is and applies corrections first, `tabletop_pairs`);
+  statement of where something is and applies corrections first, `tabletop_reader`);
 - `reread`: the world's reading of an instruction the grammar refused or read only in part (the tabletop
   world's pairs reading); it reads no negation, so it is asked only of an instruction without one;
 - `refusal`: the grammar's refusal with what the world adds to it (the tabletop world names the objects a
@@ -223,7 +223,7 @@ class _HandoverReader(SharedGrammar):
 
 
 def _tabletop_reader(world: World) -> WorldReader:
-    from nl2hltl2plan.language.tabletop_pairs import TabletopReader
+    from nl2hltl2plan.language.tabletop_reader import TabletopReader
 
     return TabletopReader(world)
 
