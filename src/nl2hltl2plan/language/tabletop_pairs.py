@@ -27,6 +27,7 @@ from nl2hltl2plan.language.accounting import account
 from nl2hltl2plan.language.content_words import take_backs, vocabulary
 from nl2hltl2plan.language.grammar.restated import count_fits
 from nl2hltl2plan.language.grounding import camel_words
+from nl2hltl2plan.language.headings import heading_pattern
 from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.tabletop_counts import plate_counts_read, plates_said_alone, total_counts_read
@@ -124,7 +125,7 @@ RATHER_THAN = re.compile(r"\b(?:rather\s+than|instead\s+of|in\s+place\s+of)\b")
 # labels that name alternatives, not steps ("Plan A: ... Plan B: ...", "Option 1: ..."): which one is meant
 # is not said, and doing both is no reading of them
 ALTERNATIVES = re.compile(
-    r"\b(?:option|plan|alternative|choice|scenario|variant|version|possibility)\s+(?:[a-d]|\d|one|two|three|"
+    rf"\b{heading_pattern('alternative_label')}\s+(?:[a-d]|\d|one|two|three|"
     r"four|i{1,3}|iv)\b"
 )
 # entries of a list numbered ("Item 1: ...", "Item the second: ...", "Point two: ..."): a list's entries,
