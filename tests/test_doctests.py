@@ -21,6 +21,7 @@ MODULES = [
     "nl2hltl2plan.logic.action_sequences",
     "nl2hltl2plan.language.restated_tasks",
     "nl2hltl2plan.language.handover_discourse",
+    "nl2hltl2plan.language.handover_narration",
     "nl2hltl2plan.language.grammar.places_again",
 ]
 

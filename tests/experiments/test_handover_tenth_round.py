@@ -18,7 +18,8 @@ from handover_specs import (
     assert_written_spec_or_refused,
 )
 
-from nl2hltl2plan.language.handover_discourse import empty, first_person_as_team, plain
+from nl2hltl2plan.language.handover_discourse import empty, plain
+from nl2hltl2plan.language.handover_narration import first_person_as_team
 
 # dev32 and dev33 sentences refused on purpose: a name called alone ("Siri" may be any word), a problem
 # stated with a negation ("blocks not on targets"), an order as a participle after a block's heading, a

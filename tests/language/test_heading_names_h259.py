@@ -1,8 +1,8 @@
-"""Headings whose words are taken for things (issues 28 and 23, h259; `heading_names`): a note's heading
-whose head is a word for a document, a list, an activity or a time ("Prep card:", "Lamp game:", "Kitchen
-bingo!", "Fridge duty.") names no task and is dropped, said in the assumptions; a count in it is checked
-against the reading, and a heading with another head, a verb or a thing's whole name stays to be read or
-refused as before. The dev set's lines (users_h259dev.txt) are swept under `-m sweep`."""
+"""Headings whose words are taken for things (issues 28 and 23, h259; `headings.heading_dropped`): a note's
+heading whose head is a word for a document, a list, an activity or a time ("Prep card:", "Lamp game:",
+"Kitchen bingo!", "Fridge duty.") names no task and is dropped, said in the assumptions; a count in it is
+checked against the reading, and a heading with another head, a verb or a thing's whole name stays to be
+read or refused as before. The dev set's lines (users_h259dev.txt) are swept under `-m sweep`."""
 
 from __future__ import annotations
 
@@ -65,7 +65,7 @@ def test_a_thing_before_another_head_stays_unread(text: str, kept: str) -> None:
 
 
 def test_headings_with_a_verb_an_order_or_a_things_name_are_kept() -> None:
-    from nl2hltl2plan.language.heading_names import heading_dropped
+    from nl2hltl2plan.language.headings import heading_dropped
 
     kept = ("Chill time: chill the egg.", "Jobs in order: put ...", "Credit card: look at it.", "Task: put")
     for text in kept:

@@ -11,7 +11,7 @@ import pytest
 from household_readings import reading
 
 from nl2hltl2plan.errors import HTTError
-from nl2hltl2plan.language.headings import answered
+from nl2hltl2plan.language.questions import answered
 from nl2hltl2plan.language.translate import translate
 
 

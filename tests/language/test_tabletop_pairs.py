@@ -49,7 +49,7 @@ def test_first_then_orders_the_groups_and_nothing_within_them():
 
 
 def test_the_grammar_reading_stands_the_pairs_reading_checks_it_or_reads_what_it_refused(monkeypatch):
-    from nl2hltl2plan.language import tabletop_pairs
+    from nl2hltl2plan.language import tabletop_reader
 
     asked: list[str] = []
 
@@ -57,7 +57,7 @@ def test_the_grammar_reading_stands_the_pairs_reading_checks_it_or_reads_what_it
         asked.append(text)
         return None
 
-    monkeypatch.setattr(tabletop_pairs, "tabletop_fallback", cannot_read)
+    monkeypatch.setattr(tabletop_reader, "tabletop_fallback", cannot_read)  # the hook asks the pairs reading
     text = "Put the carrot on the blue plate, then the orange on the yellow plate."
     assert _reading(text) == (
         [("Carrot", "BluePlate"), ("Orange", "YellowPlate")],
@@ -319,7 +319,7 @@ def test_courtesy_frames_are_no_condition_or_negation_in_any_world():
 
 
 def test_a_full_reading_the_pairs_reading_contradicts_is_not_taken():
-    from nl2hltl2plan.language.tabletop_pairs import TabletopReader
+    from nl2hltl2plan.language.tabletop_reader import TabletopReader
 
     reader = TabletopReader(WORLD)
     text = "First put the carrot on the blue plate, then the orange on the yellow plate."
@@ -334,7 +334,7 @@ def test_a_full_reading_the_pairs_reading_contradicts_is_not_taken():
 
 
 def test_a_full_reading_that_check_1_rejects_on_the_words_paired_gives_way_to_the_pairs_reading():
-    from nl2hltl2plan.language.tabletop_pairs import TabletopReader
+    from nl2hltl2plan.language.tabletop_reader import TabletopReader
 
     reader = TabletopReader(WORLD)
     text = "First put the carrot on the blue plate, then the orange on the yellow plate."

@@ -1,8 +1,9 @@
 """The layout of a handover message around its commands (issue 24): a memo's or e-mail's headers and a
 role's sign-off, a dialogue of two speakers, a work order's labelled fields and a game's numbered rules.
 `headed(text)` says the message as the plain lines the handover reader reads; words in
-`handover_headers.txt`. Each form is read only where all of it is what it claims to be; a line that
-holds any other word stays as it was, to be read or refused by name.
+`handover_headers.txt`, the labels and titles in `heading_heads.txt` (`headings.heading_words`). Each
+form is read only where all of it is what it claims to be; a line that holds any other word stays as it
+was, to be read or refused by name.
 
 - Headers opening the message: "Subject:" / "Re:" is a title, dropped where every word of it that
   names something is said again in the body, in the same order ("Subject: block moves for Tuesday"
@@ -30,11 +31,19 @@ from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import stems, word_categories
 from nl2hltl2plan.language.handover_discourse import MEANING, frame_words
+from nl2hltl2plan.language.headings import heading_pattern, heading_words
+
+# the labels of the headers and fields, and a record's title: headings' words (`heading_heads.txt`)
+_HEADINGS = (
+    "topic_label", "people_label", "day_label", "title", "task_field", "object_field", "place_field",
+    "remark_field", "last_field", "rule_label",
+)  # fmt: skip
 
 
 @lru_cache(maxsize=1)
 def _words() -> dict[str, frozenset[str]]:
-    return word_categories("handover_headers.txt")
+    heads = heading_words()
+    return word_categories("handover_headers.txt") | {kind: heads[kind] for kind in _HEADINGS}
 
 
 _FIELD = re.compile(r"^\s*([A-Za-z][A-Za-z ]{0,20}?)\s*:\s*(.*?)\s*$")
@@ -208,22 +217,17 @@ def _with_place(command: str, answer: str) -> str:
     return f"{head} {place}{comma}{tail}{end}"
 
 
-def _alternatives(kind: str) -> str:
-    """A category's words as a regex alternation ('work_order' matches 'work order')."""
-    return "|".join(r"\s+".join(t.split("_")) for t in sorted(_words()[kind], key=len, reverse=True))
-
-
 def _titled(text: str) -> str:
     """'Work order #12 - move ... . Constraints: red before blue; no block on H.' as 'move ... .' then
     'red before blue.' and 'no block on H.': a title said on the command's line goes, and a remark field
     after a sentence becomes its parts (joined by semicolons) as sentences of their own."""
     opening = re.match(
-        rf"(?i)^\s*(?:{_alternatives('title')})\s*(?:(?:#|no\.?)\s*\d+|\d+)?\s*(?::|[-–—]+)\s*(?=\S)", text
+        rf"(?i)^\s*{heading_pattern('title')}\s*(?:(?:#|no\.?)\s*\d+|\d+)?\s*(?::|[-–—]+)\s*(?=\S)", text
     )
     if opening is None:
         return text
     body = text[opening.end() :]
-    remark = re.search(rf"(?im)(?<=[.!?])[ \t]+(?:{_alternatives('remark_field')})[ \t]*:[ \t]*(.*)$", body)
+    remark = re.search(rf"(?im)(?<=[.!?])[ \t]+{heading_pattern('remark_field')}[ \t]*:[ \t]*(.*)$", body)
     if remark is None:
         return body
     said = [r.strip().rstrip(".") for r in remark[1].split(";")]

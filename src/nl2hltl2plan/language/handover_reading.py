@@ -72,7 +72,7 @@ from nl2hltl2plan.language.handover_scene import FILLER, Marked, Place, Scene
 from nl2hltl2plan.language.handover_sentences import split_sentences
 from nl2hltl2plan.language.handover_steps import flat_steps, refuse_unordered, scattered_joint
 from nl2hltl2plan.language.handover_tree import build_tree, joint_item, language_result, order_goals
-from nl2hltl2plan.language.headings import answered as labelled_answers
+from nl2hltl2plan.language.questions import answered as labelled_answers
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.worlds.world import World
 
@@ -81,7 +81,7 @@ def translate_handover(instruction: str, world: World) -> LanguageResult:
     """Instruction -> LanguageResult on a handover world (see the module docstring); a line break in it ends
     a step as a full stop does. Where the form reader refuses, each sentence it cannot read alone is said
     again from its cues (`handover_cues.restate`) and the whole is read once more (`_restated`). Questions
-    and answers labelled "Q:" / "A:" are first said as the instruction they state (`headings.answered`,
+    and answers labelled "Q:" / "A:" are first said as the instruction they state (`questions.answered`,
     every world's; a question it does not know is refused by name), after the message's layout (headers, a
     role's sign-off, a dialogue's turns, a work order's fields: `handover_headers.headed`)."""
     instruction = labelled_answers(headed(instruction))

@@ -1,5 +1,6 @@
-"""Labelled lines, read alike by every world's reader: `translate` applies `unlabelled` to each line of an
-instruction before any reader or backend reads it.
+"""What a heading is and what its words name, for every world's reader (its words: `heading_heads.txt`,
+read through `heading_words`; what each reader does with a heading stays in the reader). `translate`
+applies `unlabelled` to each line of an instruction before any reader or backend reads it.
 
 - A one-word label and a dash open a sentence as a colon does ("Goal - ...", "Condition — ..."); not after
   a step's number ("1 - move ...", "two - put ...").
@@ -13,11 +14,19 @@ instruction before any reader or backend reads it.
   is found by `counted_headings`, for a world's reader to check against its reading: the things it counts
   are the tasks, the stages the labelled steps ("Stage one: ... Stage two: ..."). It is never dropped
   unchecked.
-- Questions and answers ("Q: Where does the mug go? A: In the sink. Q: And the apple? A: The fridge.
-  Q: Order? A: Mug first.") become the instruction they state (`answered`): each answer fills its
-  question's gap, a follow-up ("And the apple?") asks the question before it again, and an answer about
-  the order orders the tasks or frees the order. A question or answer the frames do not cover, or an
-  answer that says nothing certain, is refused by name; nothing is guessed.
+- A note's heading or title that names no task ("Prep card: chill ...", "Lamp game: switch on ...",
+  "Kitchen bingo! Heat ...", "Fridge duty. Put ...", "Guest requests: ...", "Noah, tidy-up time.", h259): a
+  heading at the start of a note (a label before a colon or a dash, or a short sentence with no verb, ended
+  by a stop or an exclamation) whose head noun is a word for a document, a list, an activity or a time: the
+  words before the head are its name, not a thing, and `heading_dropped` drops the heading, each said in the
+  assumptions (nothing is dropped silently). A heading with a preposition, a determiner, a negation, an
+  order or a verb that names no thing ("Chill time:", "Jobs in order:", "Mugs on the table!") is not one: it
+  stays, to be read or refused as before. A count in the heading ("Three jobs, any order:") is checked
+  against the reading by `note_counts`; a free order in it ("any order") leaves the tasks unordered, as the
+  reading does.
+- The labels of a record's fields and of a message's headers ("Object:", "Subject:", "Task:"), the nouns of
+  a step's label ("Step 1:", "### Phase A") and a heading of wishes ("What I need:") are `heading_words`'
+  categories, which the tabletop, handover and grammar readers ask.
 
 >>> unlabelled("Goal - put the apple in the fridge. Condition - none.")
 'Goal: put the apple in the fridge.'
@@ -25,19 +34,64 @@ instruction before any reader or backend reads it.
 ''
 >>> unlabelled("1 - put the mug in the sink. Ordering: none")
 '1 - put the mug in the sink. Ordering: none'
+>>> heading_dropped("Prep card: chill a lettuce.", [])
+'chill a lettuce.'
+>>> heading_dropped("Chill time: chill a lettuce.", [])
+'Chill time: chill a lettuce.'
 """
-
 from __future__ import annotations
 
 import re
+from functools import cache
 from typing import NamedTuple
 
-from nl2hltl2plan.language.content_words import free_order_phrase, phrase_category, shared_words
-from nl2hltl2plan.language.questions import answered
+from nl2hltl2plan.language.content_words import (
+    LOCATIVE,
+    OBJECT_START,
+    free_order_phrase,
+    phrase_category,
+    shared_words,
+    vocabulary,
+    word_categories,
+)
+from nl2hltl2plan.language.grounding import find_mentions
 
-__all__ = ["CountedHeading", "answered", "counted_headings", "note_counts", "unlabelled"]
+__all__ = [
+    "CountedHeading",
+    "counted_headings",
+    "heading_dropped",
+    "heading_note",
+    "heading_pattern",
+    "heading_words",
+    "note_counts",
+    "unlabelled",
+    "wish_heading",
+]
 
-_NUMBER_WORDS = frozenset("one two three four five six seven eight nine ten i ii iii iv v".split())
+
+@cache
+def heading_words() -> dict[str, frozenset[str]]:
+    """category -> the words of `heading_heads.txt`: a heading's head nouns, what a counting heading counts,
+    a step label's nouns, a record's and a message's field labels (`_`-joined where two words)."""
+    return word_categories("heading_heads.txt")
+
+
+@cache
+def heading_pattern(kind: str) -> str:
+    """One category of `heading_words` as a regular expression, the longest word first (a `_` is a space),
+    with no context and no flags."""
+    words = sorted(heading_words()[kind], key=lambda w: (-len(w), w))
+    return "(?:" + "|".join(r"\s+".join(map(re.escape, w.split("_"))) for w in words) + ")"
+
+
+def wish_heading() -> str:
+    """A heading that says a list of wishes ("What I need: a warm apple slice in the fridge, ...", h231) as a
+    regular expression, to its colon and the space after it (no flags: the grammar ignores case)."""
+    return rf"what\s+(?:I|we)(?:'d|\s+would)?\s+{heading_pattern('wish_heading')}\s*:\s*"
+
+
+_COUNT_WORDS = {w: i for i, w in enumerate("one two three four five six seven eight nine ten".split(), 1)}
+_NUMBER_WORDS = frozenset(_COUNT_WORDS) | heading_words()["numeral"]
 _START = r"(?P<start>^|(?<=[.!?;])\s+)"
 _DASH_LABEL = re.compile(rf"{_START}(?P<label>[A-Za-z]+)(?:\s*[—–]\s*|\s+-+\s+)")
 # a label of up to three words, a colon, and a value that asks nothing, to the sentence's end
@@ -68,18 +122,13 @@ def _dropped(m: re.Match[str]) -> str:
 _EMPTY_LABELS = shared_words("empty_label")
 
 
-_COUNT_WORDS = {w: i for i, w in enumerate("one two three four five six seven eight nine ten".split(), 1)}
-# the nouns a heading counts: the tasks themselves, or the stages (labelled steps) they come in
-_TASK_NOUNS = "things?|tasks?|jobs?|placements?|moves?|items?|errands?|chores?|actions?"
-_STAGE_NOUNS = "stages?|steps?|parts?|phases?|rounds?|batch(?:es)?"
-# "one more thing:", "two last things:": what is added, not how many there are
-_NOT_A_TOTAL = "(?:more|other|last|final|further|extra|additional|remaining)"
 def _counted(start: str) -> re.Pattern[str]:
     """A heading that counts what follows (its tasks, or the stages they come in), after `start`."""
     return re.compile(
         # "there are", "we have", "today the robot has": who has the things to do is the one asked
         rf"{start}(?:(?:(?:today|now),?\s+)?(?:there\s+are|here\s+are|(?:we|you|i)\s+have|(?:the\s+robot|it)\s+has)\s+)?"
-        rf"(?P<phrase>(?P<count>\d|{'|'.join(_COUNT_WORDS)})\s+(?:(?!{_NOT_A_TOTAL}\b)[a-z]+\s+)?(?:(?P<stages>{_STAGE_NOUNS})|{_TASK_NOUNS})"
+        rf"(?P<phrase>(?P<count>\d|{'|'.join(_COUNT_WORDS)})\s+(?:(?!{heading_pattern('not_a_total')}\b)[a-z]+\s+)?"
+        rf"(?:(?P<stages>{heading_pattern('counted_stage')})|{heading_pattern('counted_task')})"
         r"(?:\s+(?:to\s+(?:do|place|make|carry\s+out)|in\s+(?:all|total)|for\s+(?:you|the\s+robot|today)))?)"
         # "Three jobs, any order:": the order the heading frees is read with the tasks, not counted
         rf"(?:\s*,?\s*{free_order_phrase('whole')})?"
@@ -138,3 +187,101 @@ def note_counts(text: str) -> list[CountedHeading]:
         count = int(word) if word.isdigit() else _COUNT_WORDS[word]
         out.append(CountedHeading(m["phrase"], count, False, m.span("phrase")))
     return out
+
+
+# --- a note's heading that names no task (h259; see the module docstring)
+
+# a label of up to six words before a colon or a spaced dash, or a sentence of as many (a label and its
+# record: "Housekeeping: Room 305.") ended by a stop or an exclamation, at the start of the text
+_LABEL = re.compile(r"^\s*(?P<words>[^:.!?;()]{1,60}?)\s*(?::|\s[-–—]+\s|[—–])\s*(?=\S)")
+_TITLE = re.compile(r"^\s*(?P<words>[^.!?;,()]{1,50}?)\s*[.!]+(?:\s+|$)")
+
+
+@cache
+def _blocking() -> frozenset[str]:
+    """Words a heading never holds: what places or picks a thing, and the order, negation and condition
+    words, which the readers read."""
+    words = vocabulary()
+    kinds = ("order", "negation", "condition", "quantifier_all", "quantifier_vague", "hedge")
+    return frozenset(LOCATIVE | OBJECT_START - {"today's"}).union(*(words.get(k, ()) for k in kinds))
+
+
+@cache
+def _verbs() -> frozenset[str]:
+    return frozenset().union(*(ws for kind, ws in vocabulary().items() if kind.startswith("verb_")))
+
+
+def _is_heading(words: str) -> bool:
+    """Whether `words` (a label or a title, its free order taken out) is a heading that names no task: it
+    ends in a head noun (after its name, which may count it: "Three jobs") or opens with one and a record's
+    number ("Ticket 2291, room 8 bathroom"), and holds no word the readers read."""
+    said = re.findall(r"[a-z0-9'-]+", words.lower().replace("’", "'"))
+    # a head alone ("Task:", "Chores:") is read as before; a name set off by a comma is an address ("Love,
+    # two things:"), not a heading's, except in a record ("Ticket 2291, room 8 bathroom")
+    if not 2 <= len(said) <= 6 or ("," in words and not any(w.isdigit() for w in said)):
+        return False
+    # a thing's name that ends in a head ("Credit card: look at it ...") is the thing
+    if any(m.end == len(said) and m.start < m.end - 1 for m in find_mentions(" ".join(said))):
+        return False
+    heads = heading_words()
+    kinds = heads["document"] | heads["activity"] | heads["time"]
+    # a record's kind and number opening it ("Ticket 2291, room 8"): a document, never a task or a job,
+    # which may number the steps ("Task 1: ... Task 2: ...")
+    named = said[-1] in kinds or (said[0] in kinds - heads["steps"] and any(w.isdigit() for w in said[1:]))
+    if not named:
+        return False
+    counted = [w for w in said if w in _COUNT_WORDS or w.isdigit()]
+    if counted and not (said[0] in kinds or said[-2:-1] == counted[-1:]):  # "Three jobs", "Ticket 2291"
+        return False
+    for word in said:
+        plain = word.removesuffix("'s")
+        if word in _blocking() or plain in _blocking():
+            return False
+        # a verb the readers read is a command ("Chill time:"), unless it also names a thing ("Microwave
+        # duty") or is a noun's part ("tidy-up time")
+        if plain in _verbs() and not find_mentions(plain):
+            return False
+    return True
+
+
+def _numbers_parts(heading: re.Match[str], text: str) -> bool:
+    """Whether the heading's kind and number ("Card 1") number another part of the text ("Card 2: ...")."""
+    kind = re.match(r"\s*([A-Za-z]+)\s+#?\d", heading["words"])
+    return kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[heading.end() :], re.I) is not None
+
+
+def heading_note(dropped: list[str]) -> str:
+    """The note that says which headings were dropped (their words name no thing a task uses)."""
+    return "read as a heading, not as things: " + ", ".join(map(repr, dict.fromkeys(dropped)))
+
+
+@cache
+def _free_order() -> re.Pattern[str]:
+    return re.compile(rf",?\s*\b{free_order_phrase('whole')}\s*$", re.I)
+
+
+def heading_dropped(text: str, dropped: list[str]) -> str:
+    """`text` without the headings that open it and name no task (see the module docstring), each added to
+    `dropped` as said; a heading's free order ("Three jobs, any order:") is dropped with it (the reading
+    leaves tasks unordered unless an order is said)."""
+    while True:
+        for m in (_TITLE.match(text), _LABEL.match(text)):
+            if m is None or _numbers_parts(m, text) or not _is_heading(_free_order().sub("", m["words"])):
+                continue
+            kept = _count_kept(m)
+            if kept and " ".join(m["words"].split()).lower() == kept[:-1].lower():
+                return text  # a count and its head alone ("Two things."): read as before
+            dropped.append(" ".join(m["words"].split()))
+            text = kept + " " + text[m.end() :] if kept else text[m.end() :]
+            break
+        else:
+            return text
+
+
+def _count_kept(heading: re.Match[str]) -> str:
+    """What stays of a heading that counts its tasks ("Three jobs, any order:" is "Three jobs:"), for
+    `note_counts` to check the count against the reading; "" for a heading with no count."""
+    count = re.search(r"(?i)\b(\w+)\s+(\w+)\W*$", _free_order().sub("", heading["words"]))
+    if count is None or count[1].lower() not in _COUNT_WORDS:
+        return ""
+    return f"{count[1]} {count[2]}:"

@@ -2,10 +2,11 @@
 on the instruction's lines as `tabletop_lines.lines_joined` gives them:
 
 - a record of labelled fields, a thing and then where it goes ("Object: green apple. Target: blue plate.",
-  "Thing: carrot. Where: blue plate."): each pair is "put THING on PLATE". The labels are
-  `tabletop_fields.txt`'s; a record is read only where every such field pairs up, each thing's label
-  first ("Plate: blue plate. Item: orange. Plate: ..." is left as it is: which plate goes with which
-  thing is not said by the order alone), and each value is names and nothing else;
+  "Thing: carrot. Where: blue plate."): each pair is "put THING on PLATE". The labels are the headings'
+  (`heading_heads.txt`: `record_thing`, `record_place`); a record is read only where every such field
+  pairs up, each thing's label first ("Plate: blue plate. Item: orange. Plate: ..." is left as it is:
+  which plate goes with which thing is not said by the order alone), and each value is names and nothing
+  else;
 - a collective noun that names the things listed after "as follows" ("Arrange the fruit as follows:
   ..."): the list is what is asked, as after "Arrange:";
 - Markdown parts whose headings say that each comes after the one before ("### Phase A ... ### Phase B
@@ -35,13 +36,13 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import free_order_phrase, phrase_category, phrase_words
-from nl2hltl2plan.language.headings import counted_headings
+from nl2hltl2plan.language.headings import counted_headings, heading_pattern, heading_words
 from nl2hltl2plan.language.spelling import english_lemmas
 from nl2hltl2plan.language.tabletop_steps import label_remarks_read
 from nl2hltl2plan.language.tabletop_wording import mention_pattern
 
-_WHAT = phrase_words("tabletop_fields.txt", "what")
-_WHERE = phrase_words("tabletop_fields.txt", "where")
+_WHAT = heading_words()["record_thing"]
+_WHERE = heading_words()["record_place"]
 _LABEL = re.compile(r"(?:^|(?<=[.;|,!?])|(?<=\s))(?P<label>[A-Za-z]+)\s*:\s*", re.IGNORECASE)
 
 
@@ -79,7 +80,7 @@ def _any_order_label(m: re.Match[str]) -> str:
 
 def _records_paired(text: str, kinds: dict[str, bool]) -> str:
     """Each "WHAT-LABEL: things. WHERE-LABEL: plate." pair as "put things on the plate."; the text as it
-    is unless every field of a `tabletop_fields.txt` label pairs up so."""
+    is unless every field of a record's label (`heading_heads.txt`) pairs up so."""
     names = mention_pattern(kinds, re.IGNORECASE).pattern
     things = rf"(?:the\s+)?{names}(?:\s*(?:,|\+|&|\band\b)\s*(?:the\s+)?{names})*"
     what = "|".join(sorted(_WHAT, key=len, reverse=True))
@@ -196,7 +197,7 @@ _AS_FOLLOWS = re.compile(
     re.IGNORECASE,
 )
 
-_PART_WORD = r"(?:step|part|phase|stage|round)"
+_PART_WORD = heading_pattern("part_label")
 # a part's heading: "### Phase A", "## Part 2 (after part 1)", "Phase B (after A)" (a part word, or hashes)
 _HEADING = re.compile(
     rf"(?:^|(?<=[.!?:])\s*)(?:(?P<hashes>#{{1,6}})\s*(?:{_PART_WORD}\s+)?|{_PART_WORD}\s+)(?P<id>[A-Za-z0-9]+)"

@@ -12,6 +12,7 @@ import re
 from collections.abc import Callable
 
 from nl2hltl2plan.language.content_words import free_order_remarks, phrase_list_pattern
+from nl2hltl2plan.language.headings import heading_pattern, heading_words
 from nl2hltl2plan.language.tabletop_freed_steps import runs_freed
 from nl2hltl2plan.language.tabletop_wording import NUMBER_WORDS, free_order, frees_every_step
 
@@ -20,7 +21,7 @@ from nl2hltl2plan.language.tabletop_wording import NUMBER_WORDS, free_order, fre
 # "step one, ...; step two, ..."), or (with a colon or bracket after it, so
 # that an article or "I" is not one) a letter or a roman numeral ("Part A:", "Phase II)")
 _LETTERS = {"a": 1, "b": 2, "c": 3, "d": 4, "i": 1, "ii": 2, "iii": 3, "iv": 4}
-_STEP_NOUN = r"(?:step|phase|stage|part|round|course|batch|level|act|wave)"
+_STEP_NOUN = heading_pattern("step_label")  # the nouns of a step label (`heading_heads.txt`)
 _TURN = (
     r"(?:(?P<n1>\d|one|two|three|four|first|second|third|fourth)\s*[:.)\-,]|(?P<l1>[a-d]|i{1,3}|iv)\s*[:)])"
 )
@@ -42,7 +43,7 @@ _LIST_NUMBER = re.compile(
     r"|(?:^|(?<=[.;!?])|(?<=[.;!?]\s))(?i:(?P<w>one|two|three|four)),\s+"
 )
 # "Plan A: ... Plan B: ...", "Option 1: ...": alternatives, no steps (`tabletop_pairs` refuses them)
-_ALTERNATIVE_NOUNS = frozenset("option plan alternative choice scenario variant version possibility".split())
+_ALTERNATIVE_NOUNS = heading_words()["alternative_label"]
 # "Goal 1: ... Goal 2: ...", "Requirement 2:": a spec sheet's identifiers, which list and never order (as the
 # handover reader reads them): no step labels (left unread, so refused); "Objective I) ... Objective II)"
 # orders its groups (a decision of test_tabletop_pairs)

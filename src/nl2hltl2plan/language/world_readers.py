@@ -6,10 +6,10 @@ and knows no world by name:
 - `own_reading`: the world reads the whole instruction itself (the handover worlds, `handover_reading`);
 - `as_read`: the instruction's lines as the one line the readers read (the tabletop world reads a line
   break by what the lines name and spells names as it does, `tabletop_lines`; the household and tabletop
-  worlds read questions and answers as the instruction they state, `headings.answered`; elsewhere the
+  worlds read questions and answers as the instruction they state, `questions.answered`; elsewhere the
   lines are joined with spaces);
 - `prepared`: the text as the shared grammar is to read it, or a refusal (the tabletop world refuses a
-  statement of where something is and applies corrections first, `tabletop_pairs`);
+  statement of where something is and applies corrections first, `tabletop_reader`);
 - `reread`: the world's reading of an instruction the grammar refused or read only in part (the tabletop
   world's pairs reading); it reads no negation, so it is asked only of an instruction without one;
 - `refusal`: the grammar's refusal with what the world adds to it (the tabletop world names the objects a
@@ -45,14 +45,14 @@ from nl2hltl2plan.language.courtesy import (
 from nl2hltl2plan.language.frame_drops import frames_dropped
 from nl2hltl2plan.language.frame_filler import frame_note
 from nl2hltl2plan.language.grounding import find_mentions
-from nl2hltl2plan.language.heading_names import heading_dropped, heading_note
-from nl2hltl2plan.language.headings import answered, note_counts
+from nl2hltl2plan.language.headings import heading_dropped, heading_note, note_counts
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_name_notes, descriptive_names
 from nl2hltl2plan.language.landmarks import put_away_unread
 from nl2hltl2plan.language.negation_forms import instead_said, untreated_said
 from nl2hltl2plan.language.negations import exclusions_unread, unmoved_said
 from nl2hltl2plan.language.numbered_steps import step_order
+from nl2hltl2plan.language.questions import answered
 from nl2hltl2plan.language.request_times import deadline_note, deadlines_dropped, starts_unread
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
@@ -145,7 +145,7 @@ def _thing_words(text: str) -> frozenset[str]:
 
 class _HouseholdReader(SharedGrammar):
     """The household (ALFRED) floor plans: the shared grammar, with "Q: ... A: ..." read as the
-    instruction the answers state (`headings.answered`), greetings and thanks dropped
+    instruction the answers state (`questions.answered`), greetings and thanks dropped
     (`courtesy.without_greetings`), what names nothing a task needs dropped as frame by every reader's
     rule (`frame_drops`: a note's name, label or time, "Liam, ...", "Today, please.", each said in the
     assumptions), colon lists, topic questions and treated "respectively" lists written out
@@ -157,7 +157,7 @@ class _HouseholdReader(SharedGrammar):
         self.world = world
         self.frames: list[str] = []  # what the general filler rule drops, for `notes`
         self.deadlines: list[str] = []  # the deadlines met by doing the tasks now, for `notes`
-        self.headings: list[str] = []  # the headings `heading_names` drops, for `notes`
+        self.headings: list[str] = []  # the headings `headings.heading_dropped` drops, for `notes`
 
     def as_read(self, lines: list[str]) -> str:  # greetings and thanks as every reader drops them; the
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
@@ -223,7 +223,7 @@ class _HandoverReader(SharedGrammar):
 
 
 def _tabletop_reader(world: World) -> WorldReader:
-    from nl2hltl2plan.language.tabletop_pairs import TabletopReader
+    from nl2hltl2plan.language.tabletop_reader import TabletopReader
 
     return TabletopReader(world)
 

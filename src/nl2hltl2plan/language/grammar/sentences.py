@@ -48,6 +48,7 @@ from nl2hltl2plan.language.grammar.verbless_items import (
     verbs_written,
 )
 from nl2hltl2plan.language.grounding import find_mentions, sentence_start
+from nl2hltl2plan.language.headings import wish_heading
 from nl2hltl2plan.language.landmarks import subject_sources, wished_put
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
@@ -523,8 +524,8 @@ def normalize(text: str) -> str:
 _WISH = re.compile(  # also a cleft: "what I'd love is for you to put ..." (h220)
     r"\b(?:what\s+(?:I|we)(?:'d|\s+would)\s+(?:like|love)\s+is\s+for\s+you\s+to\s+|"
     # a heading that says a list of goals: "What I need: a warm apple slice in the fridge, ..." (h231)
-    r"what\s+(?:I|we)(?:'d|\s+would)?\s+(?:like|love|want|need)\s*:\s*|"
-    r"(?:I|we)(?:'d|\s+would|\s+will)?\s+"
+    + wish_heading()
+    + r"|(?:I|we)(?:'d|\s+would|\s+will)?\s+"
     + courtesy_pattern("wish_verb")  # the wish verbs (`courtesy.txt`)
     + r"\s+(?:(?:for\s+)?you\s+to\s+)?)",
     re.I,

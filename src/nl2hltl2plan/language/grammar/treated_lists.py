@@ -40,7 +40,8 @@ from nl2hltl2plan.language.grammar.word_tables import VERB_PAST, VERBS
 from nl2hltl2plan.language.grounding import find_mentions
 
 _STATE = {"clean": "washed", "heat": "heated", "cool": "chilled"}  # the state word a treatment leaves
-_PARTICLE = r"(?:\s+(?:up|down|off|out))?"
+# a treatment verb's particle ("heat up", "wipe down"; `treatments_said` too)
+PARTICLE = r"(?:\s+(?:up|down|off|out))?"
 _APPLIANCE = r"(?:\s+(?:in|inside)\s+(?:the|a)\s+(?:microwave|fridge|refrigerator|sink|oven))?"
 _PREP = r"(?P<prep>in|into|on|onto|inside)"
 _PLACED = r"(?:left|put|set|placed|dropped|stored|kept|returned)(?:\s+back)?"
@@ -92,48 +93,48 @@ def _patterns() -> tuple[re.Pattern[str], ...]:
     verbs, past = _treatments(VERBS), _treatments(VERB_PAST)
     heading = re.compile(
         rf"(?P<lead>(?:^|(?<=[.;!?])\s+)(?:(?:after\s+that|then|next|now|also|first)\s*,?\s+)?)"
-        rf"(?P<verb>{verbs}){_PARTICLE}\s+{_THESE}{_PARTICLE}{_APPLIANCE}\s*,?\s+"
+        rf"(?P<verb>{verbs}){PARTICLE}\s+{_THESE}{PARTICLE}{_APPLIANCE}\s*,?\s+"
         rf"(?:and\s+|then\s+|and\s+then\s+|before\s+)(?:put|putting|set|setting|place|placing)\s+them\s+"
         rf"(?:{_AWAY}|{_PREP}\s+(?P<place>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?))\s*:\s*(?P<items>[^.;!?]+)",
         re.I,
     )
     outcome = re.compile(
         rf"(?P<lead>\b(?:make\s+sure|ensure)(?:\s+that)?\s+|,?\s+and\s+(?:that\s+)?)(?P<np>{_NP}"
-        rf"(?:\s+and\s+{_NP})?)\s+(?P<gets>gets|get|is|are)\s+(?P<part>{past}){_PARTICLE}{_APPLIANCE}\s+and\s+"
+        rf"(?:\s+and\s+{_NP})?)\s+(?P<gets>gets|get|is|are)\s+(?P<part>{past}){PARTICLE}{_APPLIANCE}\s+and\s+"
         rf"(?:{_PLACED}|ends?\s+up|goes|go)\s+{_PREP}\s+",
         re.I,
     )
     item = re.compile(
-        rf"\b(?P<np>{_ITEM_NP})\s+(?P<part>{past}){_PARTICLE}{_APPLIANCE}\s+and\s+(?:then\s+)?{_PLACED}\s+{_PREP}\s+",
+        rf"\b(?P<np>{_ITEM_NP})\s+(?P<part>{past}){PARTICLE}{_APPLIANCE}\s+and\s+(?:then\s+)?{_PLACED}\s+{_PREP}\s+",
         re.I,
     )
     named_first = re.compile(
         rf"(?P<lead>(?:^|(?<=[.;!?])\s+)(?:(?:next|now|then|first|finally|after\s+that)\s*,?\s+)?)"
         rf"(?P<np>(?:a|an|the)\s+[a-z]+(?:\s+[a-z]+){{0,3}}?)\s*:\s*(?P<verb>{verbs}|put|place|set)"
-        rf"\s+it(?P<particle>{_PARTICLE})\b",
+        rf"\s+it(?P<particle>{PARTICLE})\b",
         re.I,
     )
     shared = re.compile(
-        rf"\b(?P<steps>(?P<verb>{verbs}){_PARTICLE}\s+{_NP}\s+and\s+(?P<put>put|leave|set|place|drop)\s+it\s+"
+        rf"\b(?P<steps>(?P<verb>{verbs}){PARTICLE}\s+{_NP}\s+and\s+(?P<put>put|leave|set|place|drop)\s+it\s+"
         rf"(?:in|into|on|onto|inside)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)\s+and\s+(?P<np>{_NP})\s+{_PREP}\s+"
         rf"(?P<place>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)(?=\s*(?:[.;!?]|$))",
         re.I,
     )
     placed_after = re.compile(
-        rf"{_AFTER_LEAD}(?P<verb>{verbs}|put|move){_PARTICLE}(?:\s+away)?\s+"
+        rf"{_AFTER_LEAD}(?P<verb>{verbs}|put|move){PARTICLE}(?:\s+away)?\s+"
         rf"(?P<items>{_ITEM_NP}(?:\s*,\s*{_ITEM_NP})*\s*,?\s+and\s+{_ITEM_NP})(?:\s+away)?{_APPLIANCE}(?:\s*,?\s*one\s+at\s+a\s+time)?\s*{_PLACES_AFTER}",
         re.I,
     )
     # "Heat a tomato, an egg and a potato in the microwave, one at a time, and put each of them on the
     # counter": each thing on its own says no order and no other task (h239)
     one_at_a_time = re.compile(
-        rf"(?P<list>\b(?:{verbs}){_PARTICLE}\s+{_ITEM_NP}(?:\s*,\s*{_ITEM_NP})*\s*,?\s+and\s+{_ITEM_NP}"
+        rf"(?P<list>\b(?:{verbs}){PARTICLE}\s+{_ITEM_NP}(?:\s*,\s*{_ITEM_NP})*\s*,?\s+and\s+{_ITEM_NP}"
         rf"{_APPLIANCE})\s*,\s*one\s+at\s+a\s+time\s*(?=,)",
         re.I,
     )
     # "Cut a potato and microwave a slice, then drop the slice in the sink": the slice just treated is "it"
     slice_again = re.compile(
-        rf"(?P<head>\b(?:{verbs}){_PARTICLE}\s+(?:a|one)\s+slice{_APPLIANCE}\s*,?\s+(?:and\s+)?(?:then\s+)?"
+        rf"(?P<head>\b(?:{verbs}){PARTICLE}\s+(?:a|one)\s+slice{_APPLIANCE}\s*,?\s+(?:and\s+)?(?:then\s+)?"
         r"(?:put|drop|place|set|leave|throw|toss|move)\s+)the\s+slice\b",
         re.I,
     )
@@ -146,7 +147,7 @@ def _apart_patterns() -> tuple[re.Pattern[str], re.Pattern[str]]:
     verbs = _treatments(VERBS)
     # "Chill a mug and wash a plate: the mug goes on ..., the plate in ...", "..., and put both on the
     # counter": each thing with a treatment of its own, its place said after the list (h247)
-    each = rf"(?:{verbs}){_PARTICLE}\s+{_ITEM_NP}"
+    each = rf"(?:{verbs}){PARTICLE}\s+{_ITEM_NP}"
     each_placed_after = re.compile(
         rf"{_AFTER_LEAD}(?P<items>{each}(?:(?:\s*,\s*(?:and\s+)?|\s+and\s+){each})+){_APPLIANCE}\s*"
         rf"{_PLACES_AFTER}",
@@ -155,7 +156,7 @@ def _apart_patterns() -> tuple[re.Pattern[str], re.Pattern[str]]:
     # "Heat two mugs: one goes on the coffee maker, the other in a cabinet": each treated, each its place
     at = r"(?:in|into|on|onto|inside|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3}?"
     two_apart = re.compile(
-        rf"{_AFTER_LEAD}(?P<verb>{verbs}){_PARTICLE}\s+(?:two|2)\s+(?P<things>[a-z]+(?:\s+[a-z]+){{0,3}}?)"
+        rf"{_AFTER_LEAD}(?P<verb>{verbs}){PARTICLE}\s+(?:two|2)\s+(?P<things>[a-z]+(?:\s+[a-z]+){{0,3}}?)"
         rf"{_APPLIANCE}\s*(?:[.:;]|\s+-+\s+|,)\s*(?:the\s+)?one\s+(?:(?:goes|go)\s+)?(?P<p1>{at})\s*[,;]?\s+"
         r"(?:and\s+)?the\s+other(?:\s+(?!(?:in|into|on|onto|inside|under)\b)[a-z]+){0,2}\s+(?:(?:goes|go)\s+)?"
         rf"(?P<p2>{at})(?=\s*(?:[.;!?]|$))",
@@ -339,7 +340,7 @@ def _said_items(m: re.Match[str]) -> list[tuple[str, str]] | None:
         return [(verb, i.strip()) for i in _ITEM_GAP.sub("\0", m["items"]).split("\0")]
     out = []
     for part in _EACH_GAP.split(m["items"]):
-        said = re.match(rf"^(?P<v>[a-z]+){_PARTICLE}\s+(?P<np>.+)$", part.strip(), re.I)
+        said = re.match(rf"^(?P<v>[a-z]+){PARTICLE}\s+(?P<np>.+)$", part.strip(), re.I)
         if said is None or _base_verb(said["v"]) is None:
             return None
         out.append((said["v"].lower(), said["np"]))

@@ -37,7 +37,7 @@ from functools import lru_cache
 from nl2hltl2plan.language.content_words import phrase_list_pattern
 from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.grammar.frames import APPLIANCE_OF
-from nl2hltl2plan.language.grammar.treated_lists import treated_lists
+from nl2hltl2plan.language.grammar.treated_lists import PARTICLE, treated_lists
 from nl2hltl2plan.language.grammar.word_tables import VERB_PAST, VERBS
 from nl2hltl2plan.language.grounding import find_mentions
 
@@ -62,7 +62,6 @@ _LEAD = (
 )
 # (a note's "one bar of soap to be rinsed ...", h239)
 _THING = r"(?P<thing>(?:the|that|this|my|your|a|an|one|another)\s+[a-z]+(?:\s+[a-z]+){0,2}?)"
-_PARTICLE = r"(?:\s+(?:up|down|off|out))?"
 
 
 @lru_cache(maxsize=1)
@@ -71,18 +70,18 @@ def _patterns() -> tuple[re.Pattern[str], ...]:
     need = re.compile(
         rf"{_LEAD}{_THING}\s+(?:(?:needs?|wants?|could\s+(?:use|do\s+with))\s+"
         rf"(?:(?:a|an)\s+(?:(?:good|quick|proper|little|bit\s+of\s+a)\s+)?(?P<noun>{verbs})"
-        rf"|to\s+(?:be|get)\s+(?P<part>{past})|(?P<ger>{verbs}))|{_DUTY}\s+(?P<duty>{past})){_PARTICLE}"
+        rf"|to\s+(?:be|get)\s+(?P<part>{past})|(?P<ger>{verbs}))|{_DUTY}\s+(?P<duty>{past})){PARTICLE}"
         rf"(?:\s+and\s+(?:then\s+)?(?P<then>{_PLACED}|{_GOES_VERB})(?:\s+(?P<adv>away|back|down))?"
         r"(?=\s+(?:in|into|on|onto|inside)\s)"
         rf"|{_GOES})?(?![\w'])",
         re.I,
     )
     causative = re.compile(
-        rf"{_LEAD}(?:have|get)\s+{_THING}\s+(?P<part>{past}){_PARTICLE}(?![\w'])", re.I
+        rf"{_LEAD}(?:have|get)\s+{_THING}\s+(?P<part>{past}){PARTICLE}(?![\w'])", re.I
     )
     purpose = re.compile(
         rf"(?P<head>\b[a-z]+\s+{_THING}(?:\s+(?:in|into|inside)\s+(?:the|a)\s+(?P<place>[a-z]+))?)"
-        rf"\s+to\s+(?:be|get)\s+(?P<part>{past}){_PARTICLE}(?![\w'])",
+        rf"\s+to\s+(?:be|get)\s+(?P<part>{past}){PARTICLE}(?![\w'])",
         re.I,
     )
     # two things with one need, the place said of both: "the soap and a cloth both need washing, and both
@@ -90,7 +89,7 @@ def _patterns() -> tuple[re.Pattern[str], ...]:
     thing = r"(?:the|that|this|my|your|a|an|one)\s+[a-z]+(?:\s+[a-z]+){0,3}?"
     pair = re.compile(
         rf"{_LEAD}(?P<a>{thing})\s+and\s+(?P<b>{thing})\s+(?:both\s+)?(?:need|want)\s+"
-        rf"(?:to\s+(?:be|get)\s+(?P<part>{past})|(?P<ger>{verbs})){_PARTICLE}(?![\w'])"
+        rf"(?:to\s+(?:be|get)\s+(?P<part>{past})|(?P<ger>{verbs})){PARTICLE}(?![\w'])"
         rf"(?P<then>(?:\s*,?\s+and\s+(?:(?:both|they)\s+)?(?:go|belong)\s+|\s+and\s+{_PLACED}\s+(?:(?:it|them)\s+)?)"
         rf"(?:(?:back|away|down)\s+)?(?=(?:in|into|on|onto|inside)\s))?",
         re.I,
@@ -267,7 +266,7 @@ def _state_said(m: re.Match[str]) -> bool:
 
 
 _STATE_SAID = re.compile(
-    rf"{_PARTICLE}\s*,?\s+{phrase_list_pattern('states_said.txt', 'done')}(?![\w'])", re.I
+    rf"{PARTICLE}\s*,?\s+{phrase_list_pattern('states_said.txt', 'done')}(?![\w'])", re.I
 )
 
 
