@@ -7,6 +7,7 @@ Sets (never test50, never the excluded trials):
 - `heldout_unseen`: compositions of valid_unseen annotations with the held-out connectives
   (`compose.HELDOUT_STYLE`, never trained on);
 - `trainstyle_unseen`: valid_unseen annotations with the training connectives (unseen clauses, scenes);
+- `framed_unseen`: the same in a voice's frame of `compose_frames`' held-out pools (never trained on);
 - `faithful_seen` / `faithful_unseen`: `faithful.compose_faithful` (the earlier validation's 25
   templates) over valid_seen / valid_unseen;
 - `refsdev_seen` / `refsdev_unseen` / `refsheld_seen` / `refsheld_unseen` / `refsnew_seen` / `refsnew_unseen`:
@@ -64,6 +65,7 @@ CANDIDATES: dict[str, StructurePolicy | None] = {
 
 def rows_of_set(name: str, n: int) -> list[dict[str, Any]]:
     """The rows of a set; `NAME:SEED` composes it with another seed (e.g. `faithful_unseen:21`)."""
+    from nl2hltl2plan.language.learned.compose_frames import frame_all
     from nl2hltl2plan.language.learned.compose_refs import DEV_REFS, HELDOUT_REFS, NEW_REFS, compose_refs
     from nl2hltl2plan.language.learned.train import text_faithful_items
     from nl2hltl2plan.suites.alfred.learned_validation import faithful_split, rows_of, validation_rows
@@ -79,6 +81,8 @@ def rows_of_set(name: str, n: int) -> list[dict[str, Any]]:
         return rows_of(compose_refs(items, n, family, int(seed_text or 0)))
     style = HELDOUT_STYLE if name.startswith("heldout") else TRAIN_STYLE
     synth = synthesise(text_faithful_items("valid_unseen"), n, style, seed=int(seed_text or 11))
+    if name.startswith("framed"):
+        synth = frame_all(synth, "held", int(seed_text or 11))
     return [
         {"id": f"{name}.{i}", "n_base": len(s.tasks), "instruction": s.text, "scene": s.scene,
          "tasks": [t.model_dump() for t in s.tasks], "before": s.before, "source_trials": s.trials}
