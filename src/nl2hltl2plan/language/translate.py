@@ -174,6 +174,9 @@ def translate(
                 res = again
             elif not res.partial and not negations:
                 res = reader.doubted(res, backend)
+        # what the world's reader read off the text that no task honours ("..., tomorrow"), whichever reading
+        if off := [str(u) for u in reader.read_off() if str(u) not in res.unparsed]:
+            res = res.model_copy(update={"unparsed": [*res.unparsed, *off]})
         # "read 'whih' as 'which'", "read 'kettle' as 'watering can'": no word silently changed
         if respelt := [*respelling_notes(instruction), *reader.notes(instruction)]:
             res = res.model_copy(update={"assumptions": [*res.assumptions, *respelt]})
