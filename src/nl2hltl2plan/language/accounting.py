@@ -72,7 +72,7 @@ from nl2hltl2plan.language.negations import (
 from nl2hltl2plan.language.order_words import check_cycles, finished_words, misordered, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
 from nl2hltl2plan.language.prepositions import DESTINATION, goes_to, preposition_before, source_at
-from nl2hltl2plan.language.statements import asked_before, says_where
+from nl2hltl2plan.language.statements import asked_before, done_already, says_where
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.language.unknown_words import unread_words, unused_tools
 from nl2hltl2plan.language.unsupported_steps import (
@@ -140,7 +140,7 @@ def account(
     out += closed_after_placing(instruction, mentions, parse) + either_place(instruction, mentions, parse)
     out += returns_and_repeats(instruction, mentions, parse)
     out += other_instances(instruction, mentions, parse, instances)
-    out += vague_words(instruction, mentions) + started(instruction, parse)
+    out += vague_words(instruction, mentions) + started(instruction, parse) + done_already(instruction, tasks)
     out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
     out += one_of_several(instruction, mentions, parse, instances)
     out += under_a_place(instruction, mentions, parse) + lamps_off(toks, parse)
