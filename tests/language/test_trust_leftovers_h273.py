@@ -97,7 +97,9 @@ def test_a_treatment_said_as_done_already_is_not_done() -> None:
 # sentence's verb and place over the second once did (before 42a65c5d): the slice's "goes in the fridge"
 # swallowed into the object of "take ... to the counter"
 SWALLOWED = "Take the pan to the counter. A potato slice goes in the fridge."
-PAN = BaseTaskSpec(id="A", text="Take the pan to the counter", kind="place", object=["Pan"], receptacle=["CounterTop"])
+PAN = BaseTaskSpec(
+    id="A", text="Take the pan to the counter", kind="place", object=["Pan"], receptacle=["CounterTop"]
+)
 SLICE_TO = "Take A potato slice goes in the fridge to the counter"
 
 
@@ -109,7 +111,7 @@ SLICE_TO = "Take A potato slice goes in the fridge to the counter"
         ("Take the pan to the counter. A potato slice sits on the plate.", "plate"),
     ],
 )
-def test_check1_never_passes_a_carried_verbs_object_with_its_own_verb_and_place(text: str, place: str) -> None:
+def test_check1_never_passes_a_carried_verbs_object_with_its_own_verb_and_place(text: str, place: str):
     swallowed = BaseTaskSpec(
         id="B", text=SLICE_TO, kind="place", object=["Potato"], sliced=True, receptacle=["CounterTop"]
     )

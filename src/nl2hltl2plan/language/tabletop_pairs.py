@@ -259,9 +259,6 @@ class TabletopReader:
         """What the general filler rule dropped as frame in `as_read` (respellings have their own notes)."""
         return [frame_note(self.frames)] if self.frames else []
 
-    def read_off(self) -> list[Unread]:
-        return []
-
     def unused(self, res: LanguageResult) -> list[Unread]:
         """Each object or plate the instruction names (outside its negated clauses) that no base task
         uses: nothing lies on a plate or beside a named thing at the start, so a name read as a landmark

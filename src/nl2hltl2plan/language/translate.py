@@ -62,7 +62,7 @@ from nl2hltl2plan.language.state_tasks import (
 )
 from nl2hltl2plan.language.suggest import not_understood, refuse_unmovable, suggestion_text
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
-from nl2hltl2plan.language.world_readers import world_reader
+from nl2hltl2plan.language.world_readers import SharedGrammar, world_reader
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
@@ -175,7 +175,8 @@ def translate(
             elif not res.partial and not negations:
                 res = reader.doubted(res, backend)
         # what the world's reader read off the text that no task honours ("..., tomorrow"), whichever reading
-        if off := [str(u) for u in reader.read_off() if str(u) not in res.unparsed]:
+        read_off = reader.read_off() if isinstance(reader, SharedGrammar) else []  # (the tabletop's: none)
+        if off := [str(u) for u in read_off if str(u) not in res.unparsed]:
             res = res.model_copy(update={"unparsed": [*res.unparsed, *off]})
         # "read 'whih' as 'which'", "read 'kettle' as 'watering can'": no word silently changed
         if respelt := [*respelling_notes(instruction), *reader.notes(instruction)]:

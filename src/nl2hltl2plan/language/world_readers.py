@@ -105,11 +105,6 @@ class WorldReader(Protocol):
         """What `prepared` read as another word, as assumptions of the reading ("read 'x' as 'y'")."""
         ...
 
-    def read_off(self) -> list[Unread]:
-        """What `as_read` read off the instruction (so the rest reads as said) that no task can honour
-        ("..., tomorrow"): check 1 is to add it, whichever reading is taken."""
-        ...
-
 
 class SharedGrammar:
     """The reader of a world with no reading of its own: the shared grammar as it is."""
@@ -139,6 +134,8 @@ class SharedGrammar:
         return []
 
     def read_off(self) -> list[Unread]:
+        """What `as_read` read off the instruction (so the rest reads as said) that no task can honour
+        ("..., tomorrow", the household's): check 1 is to add it, whichever reading is taken."""
         return []
 
 
