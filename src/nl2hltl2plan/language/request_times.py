@@ -29,7 +29,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from nl2hltl2plan.language.content_words import Unread, word_categories
+from nl2hltl2plan.language.content_words import Unread, categories, word_categories
 from nl2hltl2plan.language.frame_filler import Dropped
 from nl2hltl2plan.language.handover_discourse import empty
 
@@ -144,10 +144,13 @@ def _closing_later() -> re.Pattern[str]:
 
 
 def closing_later_day(sentence: str) -> str | None:
-    """The later day said at the end of a request as when to do it ("Put the mug away, tomorrow."): a start
-    a plan made now cannot honour, never frame (h273)."""
+    """The later day said at the end of a request (a sentence with a verb) as when to do it ("Put the mug
+    away, tomorrow."): a start a plan made now cannot honour, never frame (h273)."""
     m = _closing_later().search(sentence)
-    return m["day"] if m else None
+    # (after a heading that asks nothing, "Chore chart, Saturday.", the day is the note's: frame)
+    said = re.findall(r"[a-z]+", sentence[: m.start()].lower()) if m else []
+    asked = any(c.startswith("verb_") for w in said for c in categories(w))
+    return m["day"] if m and asked else None
 
 
 def _untimed(fragment: str) -> str:
