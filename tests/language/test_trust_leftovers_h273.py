@@ -63,6 +63,7 @@ def test_a_closing_later_day_is_refused_by_name(text: str, day: str) -> None:
         "Put the wine bottle in the fridge, by tonight.",
         "Hello, robot. Tonight, put the wine bottle in the fridge.",
         "Put the wine bottle in the fridge. Have a lovely weekend!",
+        "Chore chart, Saturday. Tom: put the wine bottle in the fridge.",  # a heading's day, no request's
     ],
 )
 def test_a_deadline_a_leading_day_and_a_greeting_stay_frame(text: str) -> None:
