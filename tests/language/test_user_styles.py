@@ -366,19 +366,10 @@ KNOWN_WRONG: set[str] = {
     "Microwave the potato, then drop the tomato in the sink.",
     "Chill the lettuce and put it in the sink, and the tomato too, but on the counter.",
     "First heat the potato, and then put it in the fridge. Chill the apple and put it in the microwave.",
-    # h264's red-team probes (users_h264dev/held; held scored once, results/language/h264.md): a
-    # closing bare day ("..., tomorrow") is dropped as the day the request is for (h244's frame_times), not
-    # refused as a start (h258); "..., minimum" dropped as frame (two mugs meet it; the truth asks a refusal);
-    # "a glass ... the cup" joined as one container (the drafts join by type: ALFRED says one thing two ways);
-    # a checklist's "washed already" read as a treatment; "gets cleaned later" read as a duty now
-    "Put the wine bottle in the fridge, tomorrow.",
-    "Put two mugs in the sink, minimum.",
+    # h264's red-team probes (users_h264dev/held; held scored once, results/language/h264.md): "a glass ...
+    # the cup" joined as one container (the drafts join by type: ALFRED says one thing two ways; h273 left it)
     "Put a spoon in the glass and the cup in the sink.",
-    "Quick list: mug, washed already -> cabinet; spoon -> drawer.",
-    "Put the lettuce in the fridge, tonight.",
-    "The pan gets cleaned later; put it on the stove for now.",
     "Put a fork in the glass and the cup on the counter.",
-    "Put the bread on the counter, buttered.",
     # h266's held set (paper_h266held; scored once, results/language/h266.md): "A ... goes on the table
     # afterwards" after two container pairs orders it after the last pair only
     "Put a lettuce slice on a plate and put the plate in the fridge. Put an apple slice in a pot and the pot "

@@ -71,8 +71,8 @@ from nl2hltl2plan.language.negations import (
 )
 from nl2hltl2plan.language.order_words import check_cycles, finished_words, misordered, unordered_steps
 from nl2hltl2plan.language.parse_usage import IMPLIED_TYPES, ParseUsage
-from nl2hltl2plan.language.prepositions import DESTINATION, preposition_before, source_at
-from nl2hltl2plan.language.statements import asked_before, says_where
+from nl2hltl2plan.language.prepositions import DESTINATION, goes_to, preposition_before, source_at
+from nl2hltl2plan.language.statements import asked_before, done_already, says_where
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
 from nl2hltl2plan.language.unknown_words import unread_words, unused_tools
 from nl2hltl2plan.language.unsupported_steps import (
@@ -138,7 +138,7 @@ def account(
     out += _invented_kinds(instruction, toks, mentions, parse)
     out += treated_after_placing(instruction, mentions, parse)
     out += closed_after_placing(instruction, mentions, parse) + either_place(instruction, mentions, parse)
-    out += returns_and_repeats(instruction, mentions, parse)
+    out += returns_and_repeats(instruction, mentions, parse) + done_already(instruction, tasks)
     out += other_instances(instruction, mentions, parse, instances)
     out += vague_words(instruction, mentions, any(t.places for t in tasks)) + started(instruction, parse)
     out += corrections(instruction, mentions, parse) + repeated_tasks(instruction, mentions, parse)
@@ -314,8 +314,8 @@ def _locative(
         return False  # "in the drawer, also the ladle": a preposition's phrase never reaches over punctuation
     if source_at(instruction, toks, start):  # "from under the bed", "out of": where it is
         return True
-    if i >= 2 and toks[i - 1][0] in ("it", "them") and "verb_any" in categories(toks[i - 2][0]):
-        return False  # "put it in the microwave": where it goes, never where something is
+    if goes_to(toks, i):
+        return False  # "put it in the microwave", "the slice goes in the fridge": where it goes
     if toks[i][0] == "with" and on_the_place(toks, i, m, places):
         return True  # "the side table with the pen on it": what is on the place says which place it is
     if toks[i][0] == "with" and ((i > 0 and toks[i - 1][0] in _DONE_WORDS) or carried(m)):

@@ -6,9 +6,10 @@ A reader passes the words that name its world's things (`names`: never dropped) 
 without its frame, each fragment only the general filler rule drops added to `dropped` (shown in the
 result's notes by `frame_filler.frame_note`). A household note may also say when the whole request is for
 (`times`): a fragment set off from the request whose only words that keep it are time words
-(`frame_times.txt`: "for Friday", "tomorrow", "Today, please.", "by 5") orders nothing and is dropped too,
-unless it holds an order word ("before Friday", "until tomorrow", "first thing tomorrow"), which `empty`
-never drops.
+(`request_times`, the one reader of the time a request is for: "for Friday", "Tonight: ...", "Today,
+please.", "by 5") orders nothing and is dropped too, unless it holds an order word ("before Friday", "until
+tomorrow", "first thing tomorrow"), which `empty` never drops, or is a later day at the end of a request
+("..., tomorrow": a start, which `request_times` refuses).
 
 >>> frames_dropped("Today, please. Put the mug in the sink.", frozenset({"mug", "sink"}), [], times=True)
 'Put the mug in the sink.'
@@ -19,59 +20,15 @@ never drops.
 from __future__ import annotations
 
 import re
-from functools import lru_cache
 
-from nl2hltl2plan.language.content_words import word_categories
 from nl2hltl2plan.language.frame_filler import Dropped
-from nl2hltl2plan.language.handover_discourse import empty, frame_gone, heads_dropped, tails_dropped
+from nl2hltl2plan.language.handover_discourse import frame_gone, heads_dropped, tails_dropped
+from nl2hltl2plan.language.request_times import timed_frame, times_dropped
 
 _SENTENCE_END = re.compile(r"(?<=[A-Za-z][.!?])\s+")  # not after a list's number ("1. Carrot ...")
 # a record's kind and number opening the text ("Level 1:", "Cabin 4,"): a header unless the kind numbers
 # another part of the text too ("Task 1: ... Task 2: ...": the steps' labels)
 _NUMBERED = re.compile(r"^\s*(?:[A-Za-z]+\s+){0,2}?([A-Za-z]+)\s+(?:no\.?\s+|number\s+)?#?\d+\b")
-
-
-@lru_cache(maxsize=1)
-def _time() -> re.Pattern[str]:
-    words = {kind: "|".join(sorted(ws)) for kind, ws in word_categories("frame_times.txt").items()}
-    when = rf"(?:{words['when']}|{words['part']})s?"
-    return re.compile(
-        rf"\b(?:(?:{words['opener']})\s+)?(?:(?:the|this|next|last(?=\s+(?:{words['part']})))\s+)?{when}(?:\s+{when})*\b"
-        rf"|\bby\s+\d{{1,2}}(?:[:.]\d\d)?\s*(?:am|pm|o'?clock)?(?=\s*(?:[,.!?;:]|$|please\b|{when}\b))",
-        re.IGNORECASE,
-    )
-
-
-def _untimed(fragment: str) -> str:
-    """The fragment without its time phrases ("for Friday", "tomorrow morning", "by 5")."""
-    return _time().sub(" ", fragment)
-
-
-# a leading or closing phrase set off by a comma, a colon or a dash
-_LEAD = re.compile(r"^\s*([^,:;.!?]{1,40}?)\s*(,|:|\s[-–—]+\s)\s*(?=\S)")
-_TAIL = re.compile(r"(?:,|\s[-–—]+)\s*([^,:;.!?]{1,40}?)\s*(?=[.!?]*\s*$)")
-
-
-def _timed_frame(fragment: str, names: frozenset[str], **where: bool) -> bool:
-    """Is the fragment frame once its time phrases are read as frame (it holds one, and nothing else that
-    keeps it)?"""
-    untimed = _untimed(fragment)
-    return untimed != fragment and empty(untimed.strip(" ,.!?"), names=names, **where)
-
-
-def _times_dropped(sentence: str, seen: Dropped) -> str:
-    """The sentence without the leading and closing phrases that only say when the request is for."""
-    while (head := _LEAD.match(sentence)) and _timed_frame(
-        head[1], seen.names, edge=True, outer=True, label=head[2] != ","
-    ):
-        if seen.dropped is not None:
-            seen.dropped.append(head[1].strip())
-        sentence = sentence[head.end() :]
-    if (tail := _TAIL.search(sentence)) and _timed_frame(tail[1], seen.names, edge=True):
-        if seen.dropped is not None:
-            seen.dropped.append(tail[1].strip())
-        sentence = sentence[: tail.start()] + sentence[tail.end() :]
-    return sentence
 
 
 def frames_dropped(
@@ -93,14 +50,14 @@ def frames_dropped(
         header = k == 0 and not again
         if frame_gone(sentence, seen, whole=True, header=header):
             continue
-        if times and _timed_frame(sentence, names, whole=True, header=header):
+        if times and timed_frame(sentence, names, whole=True, header=header):
             if dropped is not None:
                 dropped.append(sentence.strip(" ,.!?;:"))
             continue
         # (a phrase dropped between commas leaves one comma: "First, though, ..." is "First, ...")
         said = re.sub(r",\s*,", ",", tails_dropped(heads_dropped(sentence, header, seen), seen)).strip()
         if times:
-            said = tails_dropped(heads_dropped(_times_dropped(said, seen), header, seen), seen).strip()
+            said = tails_dropped(heads_dropped(times_dropped(said, seen), header, seen), seen).strip()
         if said != sentence.strip() and frame_gone(said, seen, whole=True, header=header):
             continue  # what is left of it is frame too ("Campers, gather round!": "gather round!")
         end = sentence.rstrip()[-1:]

@@ -2,7 +2,7 @@
 list (`grammar.word_tables.PREPOSITIONS`, its destination and landmark sets), never written again; and
 which preposition a place phrase of a tokenized text has (`preposition_before`, for check 1); and whether a
 place is named as a source, where a thing is taken from (`source_at`, `a_source`: check 1, the grammar's
-"put it back" and the learned readers ask this one test).
+"put it back" and the learned readers ask this one test), or as where a thing goes (`goes_to`, check 1).
 
 >>> import re
 >>> bool(re.fullmatch(preposition_pattern(ONE_PLACE), "on  top of"))
@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable
+from pathlib import Path
 
 from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories
 from nl2hltl2plan.language.grammar.word_tables import DEST_PREPS, NEAR_PREPS, PREPOSITIONS
@@ -89,3 +90,19 @@ def a_source(text: str, start: int) -> bool:
     toks = tokens(text)
     at = next((k for k, t in enumerate(toks) if t[1] == start), None)
     return at is not None and source_at(text, toks, at)
+
+
+_GOING_LINES = (Path(__file__).parent / "going_words.txt").read_text().splitlines()
+_GOING = frozenset(w for line in _GOING_LINES if not line.startswith("#") for w in line.split())
+
+
+def goes_to(toks: list[tuple[str, int, int]], i: int) -> bool:
+    """Is the preposition at `i` said right after "put it" ("put it in the microwave") or after a verb that
+    says where its subject goes ("a potato slice goes in the fridge"; not "the mug that sits on the
+    shelf")? Its place is a destination, never where something is (h273: a rewrite that carried the
+    sentence before's verb over "A potato slice goes in the fridge" made it one object, and check 1 took
+    the fridge for where the slice is)."""
+    if i >= 2 and toks[i - 1][0] in ("it", "them") and "verb_any" in categories(toks[i - 2][0]):
+        return True
+    relative = i >= 2 and toks[i - 2][0] in ("that", "which")
+    return i >= 1 and toks[i - 1][0] in _GOING and not relative

@@ -4,7 +4,11 @@ a time, an occasion or an outside event ("Before I'm back, ...", "By the time th
 time or a wait on an outside event ("Wait until I'm home, then ...", "At 5 pm, ...") cannot be honoured
 by a plan made now: it is refused by name (`starts_unread`), whatever else reads it. Words in
 `request_times.txt`; a subject that names a thing of the world ("once the mug is clean") is never an
-outside event, and "you" never is (the request's own task: "before you put it away").
+outside event, and "you" never is (the request's own task: "before you put it away"). The time words set off
+from the request that only say when it is for (`frame_times`, `times_dropped`: "for Friday", "Tonight: ...",
+"Today, please.", h244) are frame, read by the household's frame rule (`frame_drops`); a later day set off at
+the end of a request with no deadline's opener ("..., tomorrow", "..., on Friday", h273) is no frame but a
+start, refused by name.
 
 >>> deadlines_dropped("Before I'm back, put the mug in the sink.", frozenset({"mug", "sink"}), [], [])
 'put the mug in the sink.'
@@ -14,6 +18,10 @@ outside event, and "you" never is (the request's own task: "before you put it aw
 'could you wash it?'
 >>> [u.words for u in starts_unread("Wait until I'm home, then wash the mug.", frozenset({"mug"}))]
 ["Wait until I'm home"]
+>>> [u.words for u in later_days_unread("Put the mug in the sink, tomorrow. Thanks, see you tonight!")]
+['tomorrow']
+>>> [u.words for u in later_days_unread("Put the mug in the sink, by tomorrow.")]
+[]
 """
 
 from __future__ import annotations
@@ -21,7 +29,9 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from nl2hltl2plan.language.content_words import Unread, word_categories
+from nl2hltl2plan.language.content_words import Unread, categories, word_categories
+from nl2hltl2plan.language.frame_filler import Dropped
+from nl2hltl2plan.language.handover_discourse import empty
 
 
 def _any(words: frozenset[str]) -> str:
@@ -38,8 +48,7 @@ def _words() -> dict[str, frozenset[str]]:
 def _phrases() -> tuple[re.Pattern[str], re.Pattern[str]]:
     """(a leading deadline phrase, a start phrase), each with its outside subject as group `who`."""
     w = _words()
-    t = word_categories("frame_times.txt")
-    when = rf"(?:(?:the|this|next|tonight'?s?)\s+)?(?:{_any(t['when'] | t['part'])})s?"
+    when = rf"(?:(?:the|this|next|tonight'?s?)\s+)?(?:{_any(w['today'] | w['when'] | w['part'])})s?"
     clock = r"\d{1,2}(?:[:.]\d\d)?\s*(?:am|pm|o'?clock)\b|noon|midnight"
     occasion = rf"(?:(?:the|my|our|your|a)\s+)?(?:{_any(w['occasion'])})(?:\s+{when})?"
     who = r"(?P<who>i|we|he|she|(?:the\s+|my\s+|our\s+)?[a-z]+(?:\s+[a-z]+)?)"
@@ -100,3 +109,80 @@ def starts_unread(instruction: str, names: frozenset[str]) -> list[Unread]:
     _, start = _phrases()
     why = "no base task waits for a time or an outside event: a plan made now cannot honour it"
     return [Unread(m["phrase"], "time", why) for m in start.finditer(instruction) if _outside(m, names)]
+
+
+def later_days_unread(text: str) -> list[Unread]:
+    """Each later day set off at the end of a request ("..., tomorrow", "..., on Friday"; h273), read
+    before the frame rule reads it off (`times_dropped`)."""
+    why = "no base task waits for a later day: a plan made now cannot be done then; say 'by' for a deadline"
+    days = (closing_later_day(s) for s in re.split(r"(?<=[.!?;])\s+", text.strip()))
+    return [Unread(day, "time", why) for day in days if day]
+
+
+# --- the time words that only say when a whole request is for (h244's frame times) ---
+
+
+@lru_cache(maxsize=1)
+def _time() -> re.Pattern[str]:
+    w = {kind: "|".join(sorted(ws)) for kind, ws in _words().items()}
+    when = rf"(?:{w['today']}|{w['when']}|{w['part']})s?"
+    return re.compile(
+        rf"\b(?:(?:{w['opener']})\s+)?(?:(?:the|this|next|last(?=\s+(?:{w['part']})))\s+)?{when}(?:\s+{when})*\b"
+        rf"|\bby\s+\d{{1,2}}(?:[:.]\d\d)?\s*(?:am|pm|o'?clock)?(?=\s*(?:[,.!?;:]|$|please\b|{when}\b))",
+        re.IGNORECASE,
+    )
+
+
+@lru_cache(maxsize=1)
+def _closing_later() -> re.Pattern[str]:
+    """A later day (no deadline's "for" or "by") set off at the end of a sentence: "..., tomorrow.",
+    "..., on Friday", "- tonight!", "..., next week, please."."""
+    w = {kind: _any(ws) for kind, ws in _words().items()}
+    later = rf"(?:(?:on|this|next)\s+)?(?:{w['when']})s?(?:\s+(?:{w['part']}))?|next\s+(?:{w['part']})"
+    closing = rf"(?:,|\s[-–—]+)\s*(?P<day>{later})(?:\s*,?\s*please)?\s*[.!?;]*\s*$"
+    return re.compile(closing, re.IGNORECASE)
+
+
+def closing_later_day(sentence: str) -> str | None:
+    """The later day said at the end of a request (a sentence with a verb) as when to do it ("Put the mug
+    away, tomorrow."): a start a plan made now cannot honour, never frame (h273)."""
+    m = _closing_later().search(sentence)
+    # (after a heading that asks nothing, "Chore chart, Saturday.", the day is the note's: frame)
+    said = re.findall(r"[a-z]+", sentence[: m.start()].lower()) if m else []
+    asked = any(c.startswith("verb_") for w in said for c in categories(w))
+    return m["day"] if m and asked else None
+
+
+def _untimed(fragment: str) -> str:
+    """The fragment without its time phrases ("for Friday", "tomorrow morning", "by 5")."""
+    return _time().sub(" ", fragment)
+
+
+# a leading or closing phrase set off by a comma, a colon or a dash
+_LEAD = re.compile(r"^\s*([^,:;.!?]{1,40}?)\s*(,|:|\s[-–—]+\s)\s*(?=\S)")
+_TAIL = re.compile(r"(?:,|\s[-–—]+)\s*([^,:;.!?]{1,40}?)\s*(?=[.!?]*\s*$)")
+
+
+def timed_frame(fragment: str, names: frozenset[str], **where: bool) -> bool:
+    """Is the fragment frame once its time phrases are read as frame (it holds one, and nothing else that
+    keeps it)? (`where` as `handover_discourse.empty`'s: `whole`, `header`, `edge`, `outer`, `label`.)"""
+    untimed = _untimed(fragment)
+    return untimed != fragment and empty(untimed.strip(" ,.!?"), names=names, **where)
+
+
+def times_dropped(sentence: str, seen: Dropped) -> str:
+    """The sentence without the leading and closing phrases that only say when the request is for (each
+    added to `seen.dropped`, but a closing later day, which `starts_unread` refuses)."""
+    while (head := _LEAD.match(sentence)) and timed_frame(
+        head[1], seen.names, edge=True, outer=True, label=head[2] != ","
+    ):
+        if seen.dropped is not None:
+            seen.dropped.append(head[1].strip())
+        sentence = sentence[head.end() :]
+    if (tail := _TAIL.search(sentence)) and timed_frame(tail[1], seen.names, edge=True):
+        # (a closing later day is read off too, so the request reads as said, but it is no frame: it is
+        # not said as dropped, and `starts_unread` refuses it)
+        if seen.dropped is not None and not closing_later_day(sentence):
+            seen.dropped.append(tail[1].strip())
+        sentence = sentence[: tail.start()] + sentence[tail.end() :]
+    return sentence

@@ -1,8 +1,9 @@
 """Is a clause that says where a thing is ("the carrot is on the blue plate") asked for, or said of a state
 that another clause refers to, rather than stated? The one test of it (`asked_before`), with its words in
 `state_words.txt`, for check 1 (`accounting`: a place so named is a stop of a task) and the tabletop reader
-(`tabletop_wording`: such a clause is a task); and the connectives that refer to a state (`REFERENCE`: "a task
-said once is read twice" in `unsupported_steps`, a command after a state in `grammar.order_phrases`).
+(`tabletop_wording`: such a clause is a task); a treatment said as done already (`done_already`, check 1);
+and the connectives that refer to a state (`REFERENCE`: "a task said once is read twice" in
+`unsupported_steps`, a command after a state in `grammar.order_phrases`).
 
 >>> asked_before("I want that the carrot is on the blue plate", 25)
 True
@@ -13,9 +14,11 @@ False
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 
-from nl2hltl2plan.language.content_words import phrase_list_pattern
+from nl2hltl2plan.language.content_words import Unread, categories, phrase_list_pattern
 from nl2hltl2plan.language.grounding import sentence_start
+from nl2hltl2plan.language.task_specs import BaseTaskSpec
 
 
 def _words(kind: str) -> str:
@@ -57,3 +60,19 @@ def says_where(text: str, at: int) -> bool:
     ("the mug is in", "the mug's already in", "the mug sitting in"; not a placing's participle: "it has been
     put in")?"""
     return _WHERE_BEFORE.search(text, 0, at) is not None
+
+
+_TREATS = {f"verb_{kind}": kind for kind in ("heat_place", "cool_place", "clean_place")}
+_ALREADY = re.compile(r"\balready\s+([a-z]+ed)\b|\b([a-z]+ed)\s*,?\s+already\b", re.I)
+
+
+def done_already(instruction: str, tasks: Sequence[BaseTaskSpec]) -> list[Unread]:
+    """Each treatment said as done already ("mug, washed already -> cabinet", "the already chilled apple")
+    that a task does all the same (h273): the reading took a state for a duty (check 1)."""
+    kinds = {t.kind for t in tasks}
+    out = []
+    for m in _ALREADY.finditer(instruction):
+        kind = next((_TREATS[c] for c in categories(m[1] or m[2]) if c in _TREATS), None)
+        if kind in kinds:
+            out.append(Unread(m[0], "action", "said as done already: no task is to do it again"))
+    return out

@@ -63,7 +63,7 @@ from nl2hltl2plan.language.state_tasks import (
 )
 from nl2hltl2plan.language.suggest import not_understood, refuse_unmovable, suggestion_text
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, task_letter
-from nl2hltl2plan.language.world_readers import world_reader
+from nl2hltl2plan.language.world_readers import SharedGrammar, WorldReader, world_reader
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.hierarchical import HierarchicalSpec, LeafOrFormula
 from nl2hltl2plan.logic.relations import compile_relations
@@ -179,9 +179,7 @@ def translate(
                 res = again
             elif not res.partial and not negations:
                 res = reader.doubted(res, backend)
-        # "read 'whih' as 'which'", "read 'kettle' as 'watering can'": no word silently changed
-        if respelt := [*respelling_notes(instruction), *reader.notes(instruction)]:
-            res = res.model_copy(update={"assumptions": [*res.assumptions, *respelt]})
+        res = _reader_says(res, reader, instruction)
         with _refused_as_not_understood(res, world):
             return _finish(res, world, backend, client, ltl, actions, build, instances, plurals)
     if client is None:
@@ -191,6 +189,18 @@ def translate(
         res = account_words(cross_check(res, types, scene), world, instances)
         with _refused_as_not_understood(res, world):
             return _finish(res, world, backend, client, ltl, actions, build, instances, plurals)
+
+
+def _reader_says(res: LanguageResult, reader: WorldReader, instruction: str) -> LanguageResult:
+    """The reading with what the world's reader adds, whichever reading was taken: the words it read off
+    the text that no task honours ("..., tomorrow") as unparsed, and its notes as assumptions."""
+    read_off = reader.read_off() if isinstance(reader, SharedGrammar) else []  # (the tabletop's: none)
+    if off := [str(u) for u in read_off if str(u) not in res.unparsed]:
+        res = res.model_copy(update={"unparsed": [*res.unparsed, *off]})
+    # "read 'whih' as 'which'", "read 'kettle' as 'watering can'": no word silently changed
+    if respelt := [*respelling_notes(instruction), *reader.notes(instruction)]:
+        res = res.model_copy(update={"assumptions": [*res.assumptions, *respelt]})
+    return res
 
 
 def _keep_negations(

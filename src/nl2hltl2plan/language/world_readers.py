@@ -53,7 +53,12 @@ from nl2hltl2plan.language.negation_forms import instead_said, untreated_said
 from nl2hltl2plan.language.negations import exclusions_unread, unmoved_said
 from nl2hltl2plan.language.numbered_steps import step_order
 from nl2hltl2plan.language.questions import answered
-from nl2hltl2plan.language.request_times import deadline_note, deadlines_dropped, starts_unread
+from nl2hltl2plan.language.request_times import (
+    deadline_note,
+    deadlines_dropped,
+    later_days_unread,
+    starts_unread,
+)
 from nl2hltl2plan.language.respectively import distributed
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.self_corrections import corrected, household_roles, in_own_words
@@ -128,6 +133,11 @@ class SharedGrammar:
     def notes(self, instruction: str) -> list[str]:
         return []
 
+    def read_off(self) -> list[Unread]:
+        """What `as_read` read off the instruction (so the rest reads as said) that no task can honour
+        ("..., tomorrow", the household's): check 1 is to add it, whichever reading is taken."""
+        return []
+
 
 def _names_a_thing(name: str) -> bool:
     return bool(find_mentions(name.lower()))
@@ -158,11 +168,13 @@ class _HouseholdReader(SharedGrammar):
         self.frames: list[str] = []  # what the general filler rule drops, for `notes`
         self.deadlines: list[str] = []  # the deadlines met by doing the tasks now, for `notes`
         self.headings: list[str] = []  # the headings `headings.heading_dropped` drops, for `notes`
+        self.later_days: list[Unread] = []  # "..., tomorrow": read off with the frame, for `read_off`
 
     def as_read(self, lines: list[str]) -> str:  # greetings and thanks as every reader drops them; the
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
         text = without_greetings(answered(" ".join(lines)), _names_a_thing)
         self.frames = []
+        self.later_days = later_days_unread(text)
         text = frames_dropped(text, _thing_words(text), self.frames, times=True)
         self.deadlines = []
         text = deadlines_dropped(text, _thing_words(text), self.deadlines, self.frames)
@@ -199,6 +211,9 @@ class _HouseholdReader(SharedGrammar):
             if u.words.lower().split(None, 1)[1] not in read
         ]
         return [*unread, *unclear, *starts]
+
+    def read_off(self) -> list[Unread]:
+        return self.later_days
 
     def refusal(self, refused: Exception, instruction: str, prepared: str, rest: str) -> Exception:
         hint = contents_hint(instruction)
