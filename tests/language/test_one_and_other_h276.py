@@ -63,3 +63,27 @@ def test_a_treatment_said_of_the_pair_is_said_of_each():
 )
 def test_what_is_not_one_and_the_other_stays_as_written(text):
     assert one_and_the_other(text) == text
+
+
+@pytest.mark.parametrize(
+    "text, task",
+    [
+        ("Chill a round of tomato and put it in the sink.", "cool_place Tomato(sliced) -> SinkBasin"),
+        ("Heat a potato slab and put it in the fridge.", "heat_place Potato(sliced) -> Fridge"),
+        ("Chill the heel of the loaf and put it in the microwave.", "cool_place Bread(sliced) -> Microwave"),
+    ],
+)
+def test_a_piece_said_without_slice_is_a_slice(text, task):
+    """Before: the whole tomato, potato or loaf, at exit 0 (h276)."""
+    tasks, _, unread = read(text)
+    assert tasks == [task] and not unread
+
+
+def test_a_part_that_may_be_no_slice_is_refused_by_name():
+    _, _, unread = read("Put a leaf of lettuce in the fridge.")
+    assert any("a leaf of lettuce" in u for u in unread)
+
+
+def test_round_as_a_shape_is_no_piece():
+    tasks, _, unread = read("Put the round tomato in the fridge.")
+    assert tasks == ["place Tomato -> Fridge"] and not unread

@@ -55,6 +55,7 @@ from nl2hltl2plan.language.grounding import (
     tokens,
 )
 from nl2hltl2plan.language.landmarks import where_things_are
+from nl2hltl2plan.language.piece_words import slices_said
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
@@ -273,7 +274,8 @@ def everyday(text: str) -> str:
         text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = named_by_use(everyday_names(respelt(text)))  # misspelt names, everyday names, names by use
     # a source split over two things first (`landmarks.where_things_are`): "both X, the one by A and ..."
-    text = one_and_the_other(where_things_are(text))  # before "the other one" is "the other X"
+    # "a round of tomato" is "a slice of tomato" before "one slice ... the other" reads it (piece_words.py)
+    text = one_and_the_other(where_things_are(slices_said(text)))  # before "the other one" is "the other X"
     text = counted_references(text)  # "the remaining two", "remotes, two of them" (counted_refs.py)
     text = _LAMP_WITH_IT_ON.sub(r"\g<lamp>", text)  # before a repeat copies the sentence
     # "... The cup too.": the task before, for the cup (repeats.py); "carry X to the lamp and turn it on"
