@@ -16,7 +16,7 @@ Where a reference is not of that shape (a passive "one slice gets chilled", two 
 after its "one"), the text stays as written: the readings after refuse what they cannot place.
 
 >>> one_and_the_other("Take two mugs: put one in the sink and the other in the fridge.")
-'Put a mug in the sink and another mug in the fridge.'
+'Put a mug in the sink and put another mug in the fridge.'
 >>> one_and_the_other("Slice an apple. Heat one slice and put it in the sink.")
 'Slice an apple. Heat one slice and put it in the sink.'
 """
