@@ -43,6 +43,13 @@ def test_the_other_slice_is_a_slice_too():
     assert order == set() and not unread
 
 
+def test_one_thing_and_the_other_in_a_sentence_are_two_things():
+    """Before: "the other" took no apple, and the first task's place was unread (refused)."""
+    text = "Warm one apple and put it in the sink, and warm the other and keep it in the fridge."
+    tasks, _, unread = read(text)
+    assert sorted(tasks) == ["heat_place Apple -> Fridge", "heat_place Apple -> SinkBasin"] and not unread
+
+
 def test_a_treatment_said_of_the_pair_is_said_of_each():
     text = "Warm up two tomatoes. Throw one of them in the bin and put the other one in the sink."
     tasks, _, unread = read(text)

@@ -74,7 +74,28 @@ def one_and_the_other(text: str) -> str:
         said = _apart(text, m)
         if said is not None:
             return said
+    return _one_named(text)
+
+
+def _one_named(text: str) -> str:
+    """ "Warm one apple ... and warm the other ...": "warm an apple ... and warm another apple ..." (the
+    "one X" and "the other" in one sentence, no other "one" between)."""
+    for m in re.finditer(r"(?<![\w-])(?<!\bthe\s)one\s+", text, re.I):
+        x = next((x for x in find_mentions(text) if x.char_start == m.end()), None)
+        if x is None or x.entry.generic or x.plural:
+            continue
+        other = _OTHER.search(text, x.char_end, _end(text, x.char_end))
+        if other is None or re.search(r"\bone\b", text[x.char_end : other.start()], re.I):
+            continue
+        rest = _said(text[x.char_end : other.start()], text[other.end() :], "another", x.entry.phrase, "")
+        if rest is not None:
+            article = "an" if x.entry.phrase[0] in "aeiou" else "a"
+            return text[: m.start()] + _cased(article, m[0]) + " " + text[x.char_start : x.char_end] + rest
     return text
+
+
+def _cased(word: str, like: str) -> str:
+    return word.capitalize() if like[:1].isupper() else word
 
 
 def _each_of_two(m: re.Match[str]) -> str:
