@@ -67,9 +67,9 @@ def slices_said(text: str) -> str:
         if _cut(text, m.end(), m["w"].lower() in _words()["slice_of_bread"]) is not None:
             text = text[: m.start("w")] + "slice" + text[m.end("w") :]
     for x in reversed(find_mentions(text)):
-        m = after.match(text, x.char_end)
-        if m and not x.entry.generic and set(x.entry.types) & _CUT and len(set(x.entry.types)) == 1:
-            text = text[: m.start("w")] + "slice" + text[m.end("w") :]
+        compound = after.match(text, x.char_end)  # "a tomato round"
+        if compound and not x.entry.generic and set(x.entry.types) & _CUT and len(set(x.entry.types)) == 1:
+            text = text[: compound.start("w")] + "slice" + text[compound.end("w") :]
     return text
 
 
