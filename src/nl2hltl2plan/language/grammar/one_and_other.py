@@ -79,8 +79,11 @@ def one_and_the_other(text: str) -> str:
 
 def _one_named(text: str) -> str:
     """ "Warm one apple ... and warm the other ...": "warm an apple ... and warm another apple ..." (the
-    "one X" and "the other" in one sentence, no other "one" between)."""
+    "one X" a verb's object, and "the other" in its sentence, no other "one" between)."""
     for m in re.finditer(r"(?<![\w-])(?<!\bthe\s)one\s+", text, re.I):
+        verb = re.search(r"([a-z]+)\s*$", text[: m.start()], re.I)
+        if verb is None or not any(c.startswith("verb_") for c in categories(verb[1].lower())):
+            continue  # "Rinse these ...: one bar of soap in the cabinet and the other ...": a list of "these"
         x = next((x for x in find_mentions(text) if x.char_start == m.end()), None)
         if x is None or x.entry.generic or x.plural:
             continue
