@@ -8,6 +8,7 @@ import re
 
 from nl2hltl2plan.language.content_words import Unread
 from nl2hltl2plan.language.grounding import Mention, sentence_start
+from nl2hltl2plan.language.piece_words import unsure_pieces
 
 # "some apples", "half of the mugs", "every other mug", "the rest": how many is not said
 _VAGUE_AMOUNT = re.compile(
@@ -113,6 +114,7 @@ def vague_words(instruction: str, mentions: list[Mention], chosen: bool = False)
         for named in [next((x for x in mentions if x.char_start == m.end()), None)]
         if named is not None and not named.plural
     ]
+    out += unsure_pieces(lowered)  # "a leaf of lettuce": maybe no slice (piece_words.py)
     out += [
         Unread(m.group(0), "count", "a vague count: say how many")
         for m in (*_THE_REST.finditer(lowered), *_VAGUE_PIECES.finditer(lowered))

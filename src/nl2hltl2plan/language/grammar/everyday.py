@@ -37,6 +37,7 @@ from nl2hltl2plan.language.courtesy import courtesy_pattern
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.counted_refs import another_said, counted_references
 from nl2hltl2plan.language.grammar.lamp_phrases import carried_to_lamp, items_under_lamp
+from nl2hltl2plan.language.grammar.one_and_other import one_and_the_other
 from nl2hltl2plan.language.grammar.order_phrases import dashed_first, state_on_it
 from nl2hltl2plan.language.grammar.order_remarks import remarks_said_plainly
 from nl2hltl2plan.language.grammar.places_again import places_named_again
@@ -54,6 +55,7 @@ from nl2hltl2plan.language.grounding import (
     tokens,
 )
 from nl2hltl2plan.language.landmarks import where_things_are
+from nl2hltl2plan.language.piece_words import slices_said
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
 
@@ -272,7 +274,8 @@ def everyday(text: str) -> str:
         text = _NUMBERED.sub(lambda m: m["lead"], text)
     text = named_by_use(everyday_names(respelt(text)))  # misspelt names, everyday names, names by use
     # a source split over two things first (`landmarks.where_things_are`): "both X, the one by A and ..."
-    text = _ONE_AND_OTHER.sub(_each_of_two, where_things_are(text))  # before "the other one" is "the other X"
+    # "a round of tomato" is "a slice of tomato" before "one slice ... the other" reads it (piece_words.py)
+    text = one_and_the_other(where_things_are(slices_said(text)))  # before "the other one" is "the other X"
     text = counted_references(text)  # "the remaining two", "remotes, two of them" (counted_refs.py)
     text = _LAMP_WITH_IT_ON.sub(r"\g<lamp>", text)  # before a repeat copies the sentence
     # "... The cup too.": the task before, for the cup (repeats.py); "carry X to the lamp and turn it on"
@@ -378,29 +381,6 @@ def _each_under_lamp(m: re.Match[str]) -> str:
     """ "look at A and then B under the lamp": "look at A under the lamp, and then look at B under it"."""
     verb = m["verb"].lower()
     return f"{m['verb']} {m['a']} {m['lamp']}, and then {verb} {m['b']} {m['lamp']}"
-
-
-# "wash two bars of soap; throw one in the bin and put the other one in the tub", "take two mugs, put one in
-# the sink and the other in the cabinet": each of the two things is a task of its own, its verb said once
-_PLACE_PHRASE = r"(?:in|into|inside|on|onto|to|under)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,3}?"
-_ONE_AND_OTHER = re.compile(
-    r"\b(?P<verb>wash|rinse|clean|heat|warm|cool|chill|take|grab|get|pick\s+up)\s+(?:two|both)\s+"
-    r"(?P<np>[a-z]+(?:\s+[a-z]+){0,3}?)\s*(?:[;,]|,?\s+and)\s+(?:then\s+)?"
-    rf"(?P<v1>[a-z]+)\s+one\s+(?P<p1>{_PLACE_PHRASE})\s*,?\s+and\s+"
-    rf"(?:(?P<v2>[a-z]+)\s+)?the\s+other(?:\s+one)?\s+(?P<p2>{_PLACE_PHRASE})(?=\s*(?:[.;!?,]|$))",
-    re.I,
-)
-
-
-def _each_of_two(m: re.Match[str]) -> str:
-    """ "wash two bars of soap; throw one in the bin and put the other one in the tub": "wash a bar of soap
-    and throw it in the bin, and wash another bar of soap and put it in the tub" (two plural things only)."""
-    named = [x for x in find_mentions(m["np"]) if not x.entry.generic]
-    if len(named) != 1 or not named[0].plural or named[0].surface.lower() != m["np"].lower():
-        return m[0]
-    one, verb = named[0].entry.phrase, m["verb"]
-    first = f"{verb} {'an' if one[0] in 'aeiou' else 'a'} {one} and {m['v1']} it {m['p1']}"
-    return f"{first}, and {verb.lower()} another {one} and {m['v2'] or m['v1']} it {m['p2']}"
 
 
 # "a spray bottle on the toilet and two more in the cabinet", "then one more", "a third one on the tank", "one
