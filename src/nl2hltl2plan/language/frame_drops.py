@@ -22,6 +22,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.frame_filler import Dropped
+from nl2hltl2plan.language.frame_remarks import scene_remark
 from nl2hltl2plan.language.handover_discourse import frame_gone, heads_dropped, tails_dropped
 from nl2hltl2plan.language.request_times import timed_frame, times_dropped
 
@@ -50,7 +51,10 @@ def frames_dropped(
         header = k == 0 and not again
         if frame_gone(sentence, seen, whole=True, header=header):
             continue
-        if times and timed_frame(sentence, names, whole=True, header=header):
+        # (a statement that sets the scene or tells of an event, beside a request: "Tenant away until
+        # Monday.", h279; the household's, whose content words `scene_remark` knows)
+        remark = times and len(sentences) > 1 and scene_remark(sentence, names)
+        if remark or times and timed_frame(sentence, names, whole=True, header=header):
             if dropped is not None:
                 dropped.append(sentence.strip(" ,.!?;:"))
             continue
