@@ -22,7 +22,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.frame_filler import Dropped
-from nl2hltl2plan.language.frame_remarks import scene_remark
+from nl2hltl2plan.language.frame_remarks import references_in_full, scene_remark
 from nl2hltl2plan.language.handover_discourse import frame_gone, heads_dropped, tails_dropped
 from nl2hltl2plan.language.request_times import timed_frame, times_dropped
 
@@ -43,7 +43,7 @@ def frames_dropped(
     for greetings and thanks (`courtesy.without_greetings`): dropping it here would drop, unsaid, the
     words the readers read ("First, though, ...", "Oh, and also ...")."""
     seen = Dropped(dropped, names, only_general=True)
-    sentences = _SENTENCE_END.split(text.strip())
+    sentences = _SENTENCE_END.split(references_in_full(text).strip())
     kind = _NUMBERED.match(sentences[0]) if sentences else None
     again = kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[kind.end() :], re.IGNORECASE)
     out = []

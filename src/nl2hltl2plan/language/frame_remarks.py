@@ -39,6 +39,23 @@ def _time() -> re.Pattern[str]:
     )
 
 
+@lru_cache(maxsize=1)
+def _abbreviations() -> tuple[re.Pattern[str], dict[str, str]]:
+    full = dict(w.split("=") for w in _words()["abbreviation"])
+    return re.compile(rf"\b({'|'.join(full)})\.\s*(?=#?\d)", re.IGNORECASE), full
+
+
+def references_in_full(text: str) -> str:
+    """`text` with a reference's abbreviation before its number said in full ("Recipe card no. 7" ->
+    "Recipe card number 7", "p. 14" -> "page 14"): its "." ends no sentence, its "no" is no negation.
+
+    >>> references_in_full("Ticket No. 7: see p. 14. No. Put it away.")
+    'Ticket number 7: see page 14. No. Put it away.'
+    """
+    pattern, full = _abbreviations()
+    return pattern.sub(lambda m: full[m[1].lower()] + " ", text)
+
+
 _WORD = re.compile(r"[A-Za-z]+(?:['’][a-z]+)?")
 
 
