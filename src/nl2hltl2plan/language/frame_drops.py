@@ -9,7 +9,9 @@ result's notes by `frame_filler.frame_note`). A household note may also say when
 (`request_times`, the one reader of the time a request is for: "for Friday", "Tonight: ...", "Today,
 please.", "by 5") orders nothing and is dropped too, unless it holds an order word ("before Friday", "until
 tomorrow", "first thing tomorrow"), which `empty` never drops, or is a later day at the end of a request
-("..., tomorrow": a start, which `request_times` refuses).
+("..., tomorrow": a start, which `request_times` refuses). With `times`, a statement that sets the scene or
+tells of an event ("Tenant away until Monday.") is dropped too, and a reference's abbreviation ("no. 7", "p.
+14") is said in full first (`frame_remarks`, h279).
 
 >>> frames_dropped("Today, please. Put the mug in the sink.", frozenset({"mug", "sink"}), [], times=True)
 'Put the mug in the sink.'
@@ -43,7 +45,8 @@ def frames_dropped(
     for greetings and thanks (`courtesy.without_greetings`): dropping it here would drop, unsaid, the
     words the readers read ("First, though, ...", "Oh, and also ...")."""
     seen = Dropped(dropped, names, only_general=True)
-    sentences = _SENTENCE_END.split(references_in_full(text).strip())
+    # (the household's references, "Recipe card no. 7", "p. 14": said in full, h279)
+    sentences = _SENTENCE_END.split((references_in_full(text) if times else text).strip())
     kind = _NUMBERED.match(sentences[0]) if sentences else None
     again = kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[kind.end() :], re.IGNORECASE)
     out = []
