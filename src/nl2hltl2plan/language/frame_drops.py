@@ -9,7 +9,9 @@ result's notes by `frame_filler.frame_note`). A household note may also say when
 (`request_times`, the one reader of the time a request is for: "for Friday", "Tonight: ...", "Today,
 please.", "by 5") orders nothing and is dropped too, unless it holds an order word ("before Friday", "until
 tomorrow", "first thing tomorrow"), which `empty` never drops, or is a later day at the end of a request
-("..., tomorrow": a start, which `request_times` refuses).
+("..., tomorrow": a start, which `request_times` refuses). With `times`, a statement that sets the scene or
+tells of an event ("Tenant away until Monday.") is dropped too, and a reference's abbreviation ("no. 7", "p.
+14") is said in full first (`frame_remarks`, h279).
 
 >>> frames_dropped("Today, please. Put the mug in the sink.", frozenset({"mug", "sink"}), [], times=True)
 'Put the mug in the sink.'
@@ -22,6 +24,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.frame_filler import Dropped
+from nl2hltl2plan.language.frame_remarks import references_in_full, scene_remark
 from nl2hltl2plan.language.handover_discourse import frame_gone, heads_dropped, tails_dropped
 from nl2hltl2plan.language.request_times import timed_frame, times_dropped
 
@@ -42,7 +45,8 @@ def frames_dropped(
     for greetings and thanks (`courtesy.without_greetings`): dropping it here would drop, unsaid, the
     words the readers read ("First, though, ...", "Oh, and also ...")."""
     seen = Dropped(dropped, names, only_general=True)
-    sentences = _SENTENCE_END.split(text.strip())
+    # (the household's references, "Recipe card no. 7", "p. 14": said in full, h279)
+    sentences = _SENTENCE_END.split((references_in_full(text) if times else text).strip())
     kind = _NUMBERED.match(sentences[0]) if sentences else None
     again = kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[kind.end() :], re.IGNORECASE)
     out = []
@@ -50,7 +54,10 @@ def frames_dropped(
         header = k == 0 and not again
         if frame_gone(sentence, seen, whole=True, header=header):
             continue
-        if times and timed_frame(sentence, names, whole=True, header=header):
+        # (a statement that sets the scene or tells of an event, beside a request: "Tenant away until
+        # Monday.", h279; the household's, whose content words `scene_remark` knows)
+        remark = times and len(sentences) > 1 and scene_remark(sentence, names)
+        if remark or times and timed_frame(sentence, names, whole=True, header=header):
             if dropped is not None:
                 dropped.append(sentence.strip(" ,.!?;:"))
             continue
