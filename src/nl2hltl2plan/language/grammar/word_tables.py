@@ -120,7 +120,8 @@ _VERBS: dict[str, tuple[str, ...]] = {
 
 _PLACING = word_categories("placing_verbs.txt")  # the placing verbs kept in a word file (h278)
 _VERBS["place"] += tuple(sorted(_PLACING["place"]))
-_DOUBLED = frozenset("put set get cut sit shut swap drop chop pop plop stop dump".split()) | _PLACING["doubled"]
+_DOUBLED = frozenset("put set get cut sit shut swap drop chop pop plop stop dump".split())
+_DOUBLED |= _PLACING["doubled"]
 
 
 def _gerund(v: str) -> str:
