@@ -42,7 +42,7 @@ def test_a_you_that_only_leaves_is_a_deadline_not_an_order(text: str) -> None:
 
 @pytest.mark.data
 def test_its_deadline_leaves_the_orders_the_text_says() -> None:
-    """Line 30 of paper_h269's class, in another kitchen (that line was refused as "contradictory ordering")."""
+    """paper_h269 line 30's class in another kitchen (that line was refused as "contradictory ordering")."""
     text = "Before you move out (kitchen): put the egg in the fridge, and put the mug in the sink. Mug first."
     assert read(text) == ([EGG, MUG], [(MUG, EGG)], [])
 
