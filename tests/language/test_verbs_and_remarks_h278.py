@@ -1,7 +1,8 @@
 """Issue 28 / 23 (h278): verbs of putting a thing somewhere that no word table knew ("prop the racket on the
 nightstand", "park the laptop", "perch the clock") are a class kept in `language/placing_verbs.txt`: read as
 "put", with their past and -ing forms. Before, each was refused as "an action the system has no word for". A
-verb that no list holds is still refused by name."""
+verb that no list holds is still refused by name. And an order remark closed by a courtesy word ("mug first
+and egg last pls") reads as without it."""
 
 from __future__ import annotations
 
@@ -38,3 +39,12 @@ def test_its_past_form_names_the_task_an_order_waits_for():
 def test_a_verb_no_list_holds_is_still_refused_by_name(verb):
     _, _, unread = read(f"{verb.capitalize()} the mug and put it in the sink.")
     assert any(repr(verb) in u for u in unread)
+
+
+def test_an_order_remark_closed_by_a_courtesy_word_is_read():
+    """Before: "mug first and egg last pls" read the egg's task first ("'Mug first': task A is not first")."""
+    text = "Put the mug in the sink, the apple in the fridge and the plate on the counter. Mug first and "
+    text += "plate last pls"
+    tasks, order, unread = read(text)
+    mug, apple, plate = tasks
+    assert order == {(mug, apple), (mug, plate), (apple, plate)} and not unread
