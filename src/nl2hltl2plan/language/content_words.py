@@ -64,6 +64,7 @@ def vocabulary() -> dict[str, frozenset[str]]:
 @lru_cache(maxsize=1)
 def _every_category() -> dict[str, frozenset[str]]:
     every = word_categories("content_words.txt")
+    every["verb_any"] |= word_categories("placing_verbs.txt")["place"]  # h278's placing verbs (their file)
     # a drink or food is a noun no world has: its phrase's last word ("hot_chocolate": "chocolate")
     said = frozenset(p.rsplit("_", 1)[-1] for p in every[DRINK_FOOD])
     return every | {"noun_unsupported": every["noun_unsupported"] | said}

@@ -4,7 +4,8 @@ a time, an occasion or an outside event ("Before I'm back, ...", "By the time th
 time or a wait on an outside event ("Wait until I'm home, then ...", "At 5 pm, ...") cannot be honoured
 by a plan made now: it is refused by name (`starts_unread`), whatever else reads it. Words in
 `request_times.txt`; a subject that names a thing of the world ("once the mug is clean") is never an
-outside event, and "you" never is (the request's own task: "before you put it away"). The time words set off
+outside event, and "you" never is (the request's own task: "before you put it away"), but in a deadline where
+it only leaves ("Before you leave, ...", "Before you move out (kitchen): ...", h278). The time words set off
 from the request that only say when it is for (`frame_times`, `times_dropped`: "for Friday", "Tonight: ...",
 "Today, please.", h244) are frame, read by the household's frame rule (`frame_drops`); a later day set off at
 the end of a request with no deadline's opener ("..., tomorrow", "..., on Friday", h273) is no frame but a
@@ -14,6 +15,8 @@ start, refused by name.
 'put the mug in the sink.'
 >>> deadlines_dropped("Before you put the mug away, wash it.", frozenset({"mug"}), [], [])
 'Before you put the mug away, wash it.'
+>>> deadlines_dropped("Before you leave (hall): wash the mug, before you head out.", frozenset(), [], [])
+'wash the mug.'
 >>> deadlines_dropped("Thanks again for last week. This time could you wash it?", frozenset(), [], [])
 'could you wash it?'
 >>> [u.words for u in starts_unread("Wait until I'm home, then wash the mug.", frozenset({"mug"}))]
@@ -53,13 +56,25 @@ def _phrases() -> tuple[re.Pattern[str], re.Pattern[str]]:
     occasion = rf"(?:(?:the|my|our|your|a)\s+)?(?:{_any(w['occasion'])})(?:\s+{when})?"
     who = r"(?P<who>i|we|he|she|(?:the\s+|my\s+|our\s+)?[a-z]+(?:\s+[a-z]+)?)"
     being = r"(?:'m|'re|'s|\s+am|\s+are|\s+is|\s+gets?|\s+comes?|\s+get\s+back)"
-    event = rf"{who}(?:{being}\s+(?:{_any(w['back'])})\b|\s+(?:{_any(w['event'])})\b)"
+    verb = rf"(?P<verb>{_any(w['event'] | w['leaving'])})"
+    event = rf"{who}(?:{being}\s+(?:{_any(w['back'])})\b|\s+{verb}\b)"
     what = rf"(?:{event}|{when}|{occasion}|{clock})"
     lead = rf"(?:(?:{_any(w['lead'])})\s+)?"
-    deadline = rf"^\s*{lead}(?P<phrase>(?:{_any(w['deadline'])})\s+{what})\s*(?:,|:|\s[-–—]+\s)\s*(?=\S)"
+    # (after the phrase: "for the night", or a room in brackets, "Before you move out (kitchen):")
+    rest = r"(?:\s+for\s+the\s+(?:day|night|weekend))?(?:\s*\([^()]{1,40}\))?\s*"
+    deadline = rf"^\s*{lead}(?P<phrase>(?:{_any(w['deadline'])})\s+{what}){rest}(?:,|:|\s[-–—]+\s)\s*(?=\S)"
     at = r"(?:^|(?<=[.!?;:]\s)|(?<=\bthen\s))\s*"  # a sentence's or a "then" clause's start
     start = rf"{at}(?P<phrase>(?:{_any(w['start'])})\s+{what})(?=\s*[,.;:!?]|\s+then\b)"
     return re.compile(deadline, re.IGNORECASE), re.compile(start, re.IGNORECASE)
+
+
+@lru_cache(maxsize=1)
+def _closing_leave() -> re.Pattern[str]:
+    """A closing deadline of the request's own "you" leaving (h278): "..., before you leave.", "... before
+    you head out, please!" (met now, as a leading one is)."""
+    phrase = rf"(?P<phrase>(?:before|by\s+the\s+time)\s+you\s+(?:{_any(_words()['leaving'])}))"
+    tail = r"(?:\s+for\s+the\s+(?:day|night))?(?:\s*,?\s*please)?(?=\s*[.!]*\s*$)"
+    return re.compile(rf"\s*,?\s+{phrase}{tail}", re.I)
 
 
 @lru_cache(maxsize=1)
@@ -72,10 +87,12 @@ def _remarks() -> tuple[re.Pattern[str], re.Pattern[str]]:
     return re.compile(thanks, re.IGNORECASE), re.compile(rf"^\s*(?:{_any(w['remark'])})\s+{asking}", re.I)
 
 
-def _outside(m: re.Match[str], names: frozenset[str]) -> bool:
+def _outside(m: re.Match[str], names: frozenset[str], leaves: bool = False) -> bool:
     """Is the phrase's subject (if it has one) no thing of the world, none said before ("they") and not
-    the request's own "you"?"""
+    the request's own "you"? With `leaves` (a deadline), "you" that only leaves is ("before you leave")."""
     who = set((m["who"] or "").lower().split())
+    if leaves and who == {"you"}:
+        return "_".join((m["verb"] or "").lower().split()) in _words()["leaving"]
     return not (who & (names | _words()["thing"] | {"you"}))
 
 
@@ -92,9 +109,12 @@ def deadlines_dropped(text: str, names: frozenset[str], said: list[str], frames:
         if said_first := remark.match(sentence):
             frames.append(said_first[0].strip())
             sentence = sentence[said_first.end() :]
-        if (m := deadline.match(sentence)) and _outside(m, names):
+        if (m := deadline.match(sentence)) and _outside(m, names, leaves=True):
             said.append(sentence[: m.end()].strip(" ,:-–—"))
             sentence = sentence[m.end() :]
+        if closing := _closing_leave().search(sentence):
+            said.append(closing["phrase"])
+            sentence = sentence[: closing.start()] + sentence[closing.end() :]
         out.append(sentence)
     return " ".join(out)
 

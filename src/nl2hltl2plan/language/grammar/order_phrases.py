@@ -357,10 +357,17 @@ def opener_closed(text: str) -> str:
 
     >>> opener_closed("before you put the mug in the sink put the egg in the fridge")
     'before you put the mug in the sink, put the egg in the fridge'
+    >>> opener_closed("Before you sing: chill the tomato")
+    'Before you sing, chill the tomato'
     """
     out, pos = [], 0
     for m in _SUBORDINATE_OPENER.finditer(text):
-        end = re.search(r"[,.;!?]|$", text[m.end() :])
+        end = re.search(r"[,:.;!?]|$", text[m.end() :])
+        if end is not None and end[0] == ":":  # set apart by a colon (h278): the clause ends there, as at
+            # a comma; read on, its reference took the main clause's task and ordered it against itself
+            out.append(text[pos : m.end() + end.start()].rstrip() + ",")
+            pos = m.end() + end.end()
+            continue
         if end is None or (end[0] == "," and end.start() > 0):
             continue  # the writer set the clause apart: the rules read it
         words = tokens(text[m.end() : m.end() + end.start()])

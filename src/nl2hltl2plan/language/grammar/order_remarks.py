@@ -118,6 +118,7 @@ def order_remark(sentence: str, before: str | None = None) -> list[Relation] | N
 def _read(sentence: str, before: str | None = None) -> list[tuple[Relation, str]] | None:
     """Each part of a remark sentence with its relation, in the order said; None: no remark. "The CD
     whenever." where no CD is named `before` is no remark: it is the task before, for the CD (`repeats`)."""
+    sentence = _CLOSING_COURTESY.sub("", sentence)  # "mug first and egg last pls": the parts read without it
     parts = [p.strip(" .!") for p in _PARTS.split(sentence.strip(" .!")) if p.strip(" .!")]
     read = [(_part(p), p) for p in parts if not _COURTESY.match(p)]
     if not read or any(r is None for r, _ in read):
@@ -140,6 +141,8 @@ def _named_before(thing: str, before: str) -> bool:
 
 _SENTENCE = re.compile(r"[^.;!?]+[.;!?]*\s*")
 _COURTESY = re.compile(r"^(?:please|thanks|thank\s+you|cheers)$", re.I)
+# a courtesy word closing a remark sentence (h278): with it, "and" before its last part was no part break
+_CLOSING_COURTESY = re.compile(r"\s*,?\s*\b(?:please|pls|plz|thanks|thx|ta|cheers)\s*[.!]*\s*$", re.I)
 
 
 # "A and put B after everything else" / "after the rest" / "once both are done": the clause the closing

@@ -8,7 +8,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language import grounding
-from nl2hltl2plan.language.content_words import phrase_list_pattern
+from nl2hltl2plan.language.content_words import phrase_list_pattern, word_categories
 from nl2hltl2plan.language.courtesy import courtesy_pattern
 
 # ----- verbs ---------------------------------------------------------------------------------------
@@ -118,7 +118,10 @@ _VERBS: dict[str, tuple[str, ...]] = {
 }
 
 
-_DOUBLED = frozenset("put set get cut sit shut swap drop chop pop plop stop dump".split())  # "putting"
+_PLACING = word_categories("placing_verbs.txt")  # the placing verbs kept in a word file (h278)
+_VERBS["place"] += tuple(sorted(_PLACING["place"]))
+_DOUBLED = frozenset("put set get cut sit shut swap drop chop pop plop stop dump".split())
+_DOUBLED |= _PLACING["doubled"]
 
 
 def _gerund(v: str) -> str:
@@ -148,7 +151,7 @@ def _past(v: str) -> str:
         return v + "d"
     if v.endswith("y") and v[-2] not in "aeiou":
         return v[:-1] + "ied"
-    if v in {"drop", "chop", "stop", "swap", "plop", "pop"}:
+    if v in {"drop", "chop", "stop", "swap", "plop", "pop"} | _PLACING["doubled"]:
         return v + v[-1] + "ed"
     return v + "ed"
 
