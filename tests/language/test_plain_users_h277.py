@@ -27,9 +27,9 @@ def test_the_step_after_before_that_comes_first(text):
 
 
 def test_before_that_as_a_determiner_is_no_order_marker():
-    """"before that mug ..." opens no step: the rule leaves it to the reading as before (no order of its own)."""
+    """"before that mug ..." opens no step: the rule leaves it to the reading (no order of its own)."""
     _, order, _ = read("put the mug in the sink, before that mug gets dirty")
-    assert (EGG_FRIDGE, MUG_SINK) not in order and order == set()
+    assert order == set()
 
 
 @pytest.mark.parametrize(
@@ -37,7 +37,10 @@ def test_before_that_as_a_determiner_is_no_order_marker():
     [
         ("give the mug a rinse and put it in the sink", "clean_place Mug -> SinkBasin"),
         ("give the apple a good chill and put it in the sink", "cool_place Apple -> SinkBasin"),
-        ("cut a tomato, give one slice a quick warm up and put it in the fridge", "heat_place Tomato(sliced) -> Fridge"),
+        (
+            "cut a tomato, give one slice a quick warm up and put it in the fridge",
+            "heat_place Tomato(sliced) -> Fridge",
+        ),
     ],
 )
 def test_a_treatment_said_as_a_noun_is_its_verb(text, task):

@@ -312,11 +312,12 @@ _BUT_BEFORE = re.compile(
     r"(?=[a-z])",
     re.IGNORECASE,
 )
-# "X, before that Y" / "X; before you do that Y" / "X - before that tho Y" / "X. oh and before that Y" with no
-# "but": Y comes first as well (users_h271's W3: the clause was read as a following "then", at exit 0), where
-# a verb or a request opens Y (not "before that mug is ...", a determiner)
+# "X, before that Y" / "X; before you do that Y" / "X - before that tho Y" / "X. oh and before that Y" with
+# no "but" (a sentence opening "Before that" is the grammar's own): Y comes first as well (users_h271's W3:
+# read as a following "then", at exit 0), where a verb or a request opens Y (not "before that mug is ...")
 _BARE_BEFORE = re.compile(
-    rf"(?<=\w)\s*(?:[,;.!?]|\s[-\u2013])\s*(?:oh\s*,?\s+(?:and\s+)?)?{_BEFORE_THAT}"
+    rf"(?<=\w)(?:\s*[,;]\s*(?:oh\s*,?\s+(?:and\s+)?)?|\s+[-\u2013]\s*|[.!?]\s*oh\s*,?\s+(?:and\s+)?)"
+    rf"{_BEFORE_THAT}"
     r"(?:\s*,?\s*(?:though|tho))?\s*,?\s+(?=(?:please\s+|pls\s+|can\s+you\s+|just\s+)?([a-z]+))",
     re.IGNORECASE,
 )
