@@ -1,7 +1,8 @@
 """Issue 28/23 (h277), users_h271's classes in plain user voice. "A, before that B" with no "but" (W3): the
 step said second comes first; before, ", before that" / "; before you do that" / "- before that" was read as a
 following "then" (A before B) at exit 0. A treatment said as a noun (C3): "give the kettle a rinse" is "rinse
-the kettle"; before, refused."""
+the kettle"; before, refused. A thing's place said as a sentence, then "it" (C2): "my mug is by the sink, can
+u heat it ..." takes the mug from there; before, refused."""
 
 from __future__ import annotations
 
@@ -52,3 +53,23 @@ def test_give_with_no_treatment_noun_or_no_thing_is_left_as_it_was():
     """"give the kid a wash" names no thing of the scene: not read as a washing task (nothing to wash)."""
     tasks, _, _ = read("give the kid a wash and put the mug in the sink")
     assert not any(t.startswith("clean_place") for t in tasks)
+
+
+@pytest.mark.parametrize(
+    "text, task",
+    [
+        ("my apple is on the counter, can you put it in the fridge", "place Apple -> Fridge"),
+        ("there's a mug by the sink. heat it and put it on the table", "heat_place Mug -> DiningTable"),
+        ("there are two spoons in the sink, put them in a drawer", "place_two 2x Spoon -> Drawer"),
+    ],
+)
+def test_a_place_said_first_is_where_the_thing_is(text, task):
+    """The third was clean_place at exit 0 before (the sink it is in read as its washing)."""
+    tasks, _, unread = read(text)
+    assert tasks == [task] and not unread
+
+
+def test_a_place_said_of_the_holder_is_left_to_the_grammar():
+    """"it" after "in" is the fridge, not a thing taken from the left: no rewrite, the clause stays unread."""
+    _, _, unread = read("the fridge is on the left, put the apple in it")
+    assert unread == ["the fridge is on the left"]
