@@ -437,8 +437,8 @@ def relative_subject(instruction: str, m: Mention, mentions: list[Mention]) -> b
 
 # A thing's place said as a sentence of its own, then the thing as "it" (users_h271's C2): "my phone is on
 # the desk, can you bring it to the bed", "there's an apple on the counter. chill it ..." is "take the phone
-# from the desk, ... bring it ...", whose place the grammar reads as a source; only where the next clause opens
-# (after a request) with one of the grammar's verbs and "it" / "them" (not "put the pen in it")
+# from the desk, ... bring it ...", whose place the grammar reads as a source; only where the next clause
+# opens (after a request) with one of the grammar's verbs and "it" / "them" (not "put the pen in it")
 _STATED_PLACE = re.compile(
     r"(?:^|(?<=[.!?]\s))(?:(?P<there>there(?:'s|\s+is|\s+are)\s+)(?P<det>a|an|the|my|your|two)|(?P<det2>the|my|your|a|an|two))"
     r"\s+(?P<thing>[a-z]+(?:\s+[a-z]+){0,2}?)\s+(?(there)|(?:is|are|'s)\s+)"
