@@ -376,10 +376,9 @@ KNOWN_WRONG: set[str] = {
     "on the counter. A chilled bread slice goes on the table afterwards.",
     # h271's held-out plain-user set (scored once at 278391fe, results/language/h271.md): "all the" and "the
     # rest of the" counted as every one the world holds (the guide: 2 for a pick-two); "the table at the end
-    # of the bed" read as the side table; "A, before that B" read as A before B
+    # of the bed" read as the side table ("A, before that B", read as A before B, is read right since h277)
     "put a pen in a cup and put it on the table at the end of the bed, oh and both books go there too",
     "put all the spray bottles in the cabinet under the sink and wash a cloth and put it on the toilet",
-    "put a new roll of toilet paper on the holder, before that put two spray bottles in the cabinet",
     "put 2 soap bottles and a spray bottle on the toilet. the rest of the spray bottles go in the cabinet",
     # h274's held set (choices_h274held; scored once, results/language/h274.md): "towel" is read as the
     # HandTowel, since ALFRED puts no Towel on a shelf or in a cart; its truth says Towel (grounding class)

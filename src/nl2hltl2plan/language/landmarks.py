@@ -9,7 +9,7 @@ the microwave" is fine: the counter is the destination, the microwave where on i
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Collection
 from pathlib import Path
 
 from nl2hltl2plan.language.content_words import (
@@ -433,3 +433,31 @@ def relative_subject(instruction: str, m: Mention, mentions: list[Mention]) -> b
         and _AFTER_A_NAME.fullmatch(instruction, before[-1].char_end, m.char_start)
         and _STRANDED_WHERE.match(instruction, m.char_end)
     )
+
+
+# A thing's place said as a sentence of its own, then the thing as "it" (users_h271's C2): "my phone is on
+# the desk, can you bring it to the bed", "there's an apple on the counter. chill it ..." is "take the phone
+# from the desk, ... bring it ...", whose place the grammar reads as a source; only where the next clause
+# opens (after a request) with one of the grammar's verbs and "it" / "them" (not "put the pen in it")
+_STATED_PLACE = re.compile(
+    r"(?:^|(?<=[.!?]\s))(?:(?P<there>there(?:'s|\s+is|\s+are)\s+)(?P<det>a|an|the|my|your|two)|(?P<det2>the|my|your|a|an|two))"
+    r"\s+(?P<thing>[a-z]+(?:\s+[a-z]+){0,2}?)\s+(?(there)|(?:is|are|'s)\s+)"
+    r"(?P<place>(?:on|in|inside|by|near|next\s+to|under)\s+(?:the|my|your)\s+[a-z]+(?:\s+[a-z]+)?)"
+    r"(?P<sep>\s*[,.;]\s*|\s+(?:and|so)\s+)"
+    r"(?=(?:(?:can|could|would)\s+(?:you|u)\s+|please\s+|pls\s+)?(?P<verb>[a-z]+)\s+(?:it|them)\b)",
+    re.I,
+)
+
+
+def places_stated(text: str, verbs: Collection[str]) -> str:
+    """The text with each thing whose place is said as a sentence before "VERB it" said with its place
+    only (see `_STATED_PLACE`); `verbs`: the grammar's verbs. A phrase naming no one thing is left."""
+
+    def topic(m: re.Match[str]) -> str:
+        if m["verb"].lower() not in verbs or len(find_mentions(m["thing"])) != 1:
+            return m[0]
+        place = re.sub(r"^(?:on|in|inside)\b", "from", m["place"], flags=re.I)
+        det = "two" if (m["det"] or m["det2"]).lower() == "two" else "the"
+        return f"take {det} {m['thing']} {place}, "
+
+    return _STATED_PLACE.sub(topic, text)

@@ -54,7 +54,7 @@ from nl2hltl2plan.language.grounding import (
     plural_name,
     tokens,
 )
-from nl2hltl2plan.language.landmarks import where_things_are
+from nl2hltl2plan.language.landmarks import places_stated, where_things_are
 from nl2hltl2plan.language.piece_words import slices_said
 from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.statements import RELATIVE_PLACE
@@ -276,6 +276,7 @@ def everyday(text: str) -> str:
     # a source split over two things first (`landmarks.where_things_are`): "both X, the one by A and ..."
     # "a round of tomato" is "a slice of tomato" before "one slice ... the other" reads it (piece_words.py)
     text = one_and_the_other(where_things_are(slices_said(text)))  # before "the other one" is "the other X"
+    text = places_stated(text, VERBS)  # "my phone is on the desk, bring it ...": "my phone on the desk, ..."
     text = counted_references(text)  # "the remaining two", "remotes, two of them" (counted_refs.py)
     text = _LAMP_WITH_IT_ON.sub(r"\g<lamp>", text)  # before a repeat copies the sentence
     # "... The cup too.": the task before, for the cup (repeats.py); "carry X to the lamp and turn it on"

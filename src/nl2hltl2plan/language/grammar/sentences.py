@@ -312,6 +312,15 @@ _BUT_BEFORE = re.compile(
     r"(?=[a-z])",
     re.IGNORECASE,
 )
+# "X, before that Y" / "X; before you do that Y" / "X - before that tho Y" / "X. oh and before that Y" with
+# no "but" (a sentence opening "Before that" is the grammar's own): Y comes first as well (users_h271's W3:
+# read as a following "then", at exit 0), where a verb or a request opens Y (not "before that mug is ...")
+_BARE_BEFORE = re.compile(
+    rf"(?<=\w)(?:\s*[,;]\s*(?:oh\s*,?\s+(?:and\s+)?)?|\s+[-\u2013]\s*|[.!?]\s*oh\s*,?\s+(?:and\s+)?)"
+    rf"{_BEFORE_THAT}"
+    r"(?:\s*,?\s*(?:though|tho))?\s*,?\s+(?=(?:please\s+|pls\s+|can\s+you\s+|just\s+)?([a-z]+))",
+    re.IGNORECASE,
+)
 # "X, but make sure you first Y" is "X, but first Y" (`order_scope.txt`'s `first_before`; before `everyday`
 # reads "make sure" as a wish)
 _BUT_SURE_FIRST = re.compile(
@@ -500,6 +509,7 @@ def normalize(text: str) -> str:
     text = _COUNTED_FROM_AFTER.sub(r"\g<det> \g<nth> \g<noun> \g<side>", text)
     text = _SHELF_OF.sub("", text)
     text = _TAKE_LIST_THEN_PUT.sub(lambda m: f"{m['verb']} {m['objs']} ", text)
+    text = _BARE_BEFORE.sub(lambda m: ". Before that, " if m[1].lower() in G.VERBS else m[0], text)
     text = _BUT_BEFORE.sub(lambda m: m.group(0) if _keeps_but_first(text, m) else ". Before that, ", text)
     text = _THE_FOR_THEN.sub(lambda m: "then " if m.group(1).lower() in G.VERBS else m.group(0), text)
     text = _RINSE_ADJ.sub(r"\1 rinsed ", lamp_phrasing(text))

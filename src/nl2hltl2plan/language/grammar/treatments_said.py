@@ -204,12 +204,34 @@ _PREP_AFTER = re.compile(r"\s+(?:in|into|on|onto|inside)\s", re.I)
 _PLACE_BEFORE = re.compile(r"\b(?:in|into|on|onto|inside|on\s+top\s+of)\s+(?:the|a|an)\s+$", re.I)
 
 
+@lru_cache(maxsize=1)
+def _give() -> re.Pattern[str]:
+    """A treatment said as a noun given to the thing (users_h271's C3): "give the sponge a rinse", "give a
+    slice of bread a good chill", "give it a quick warm up", "give one slice a heat"."""
+    thing = r"(?:it|them|(?:the|that|this|my|your|a|an|one|another)\s+[a-z]+(?:\s+[a-z]+){0,3}?)"
+    return re.compile(
+        rf"\bgive\s+(?P<thing>{thing})\s+an?\s+(?:(?:good|quick|proper|little|nice|short|thorough)\s+)?"
+        rf"(?P<noun>{_forms(VERBS)}){PARTICLE}(?![\w'-])",
+        re.I,
+    )
+
+
+def _given(m: re.Match[str]) -> str:
+    """ "give X a rinse" -> "rinse X" where X is "it", a slice said before ("one slice") or one name the
+    lexicon knows; anything else ("give the kid a wash") as it was."""
+    verb, thing = _base(m["noun"]), m["thing"]
+    slice_ = re.fullmatch(r"(?:one|a|an|another)\s+(?:slice|piece)", thing, re.I)
+    if verb is None or not (thing.lower() in ("it", "them") or slice_ or _names_thing(thing)):
+        return m[0]
+    return f"{verb} {thing}"
+
+
 def treatments_said(text: str) -> str:
     """The text with the needs, causatives and terse orders above rewritten (see the module docstring)."""
     need, causative, purpose, pair, inverted = _patterns()
     text = _TEXTED_ID.sub("I'd ", _minded(text))
     text = treated_lists(text)  # lists, outcomes, things said first (treated_lists)
-    text = _MAKE_STATE.sub(_made, text)
+    text = _give().sub(_given, _MAKE_STATE.sub(_made, text))
     text = _AFTER_STEP.sub("then ", _GIVE_ON.sub(r"put \g<it> ", _YOU_STEP.sub(r"\g<lead>", text)))
     text = _PUT_BARE.sub(r"\g<lead>\g<verb> it ", text)
     text = _PRONOUN_GOAL.sub(_put_pronoun, text)
