@@ -189,8 +189,8 @@ def empty(
     # a tricky one") name nothing a task needs
     if general:
         text = _A_ONE.sub(lambda m: m[0] if _content_word(m[1]) else " ", _DO_IT.sub(" ", text))
-    if voice:  # "a" before a word is an article, no region ("we have a visual", "what a gallop")
-        text = _ARTICLE_A.sub(" ", text)
+    if voice:
+        text = _voice_words(text)
     if MEANING.search(text) or _ACTION.search(text):
         return False
     parts = parts_of(re.findall(r"[a-z0-9]+", text), marked)
@@ -236,6 +236,18 @@ def _record_kind(words: str) -> bool:
 
 
 _ARTICLE_A = re.compile(r"\ba\s+(?!(?:and|or|nor|to|through|then|before|after)\b)(?=[a-z]{2,})")
+# in a voice's opening or closing: a verb on the listener's own things ("Grab your partners": never a scene's
+# thing), and "all" / "every" / "each" on a noun that names none ("all eyes on me", "all hands on deck")
+_ON_YOURS = re.compile(rf"\b(?:{VERB}|{TOUCH})\s+(?=your\s+[a-z])")
+_ALL_OF = re.compile(r"\b(?:all|every|each)\s+(?=([a-z]+))")
+
+
+def _voice_words(text: str) -> str:
+    """A voice's sentence without what names nothing there: "a" before a word (an article, no region: "we
+    have a visual", "what a gallop"), a verb on the listener's own things, a quantifier of a noun that names
+    nothing (the noun itself stays, to be judged as frame)."""
+    text = _ON_YOURS.sub(" ", _ARTICLE_A.sub(" ", text))
+    return _ALL_OF.sub(lambda m: m[0] if MEANING.fullmatch(m[1]) or _content_word(m[1], True) else " ", text)
 _DO_IT = re.compile(r"\b(?:do|does|did)\s+it\b(?!\s+(?:again|twice|\d))")
 _A_ONE = re.compile(r"\ban?\s+([a-z]+)\s+one\b")
 _LABEL = re.compile(r"^\s*([^:]{1,60}?)\s*:\s*(?=\S)")
