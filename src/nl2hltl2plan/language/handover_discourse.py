@@ -550,8 +550,8 @@ def plain(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
     sentences = _unsigned(sentences, dropped)
     edges = _voice_edges(sentences)
     for k, sentence in enumerate(sentences):
-        seen = Dropped(dropped)
-        if frame_gone(sentence, seen, whole=True, header=k == 0, voice=k in edges) or _START_SIGNAL.match(sentence):
+        framed = frame_gone(sentence, Dropped(dropped), whole=True, header=k == 0, voice=k in edges)
+        if framed or _START_SIGNAL.match(sentence):
             continue
         if k == 0 and _called(sentence.rstrip(" ,.!:")):  # a letter's greeting on its own: "Dear Sam,"
             continue
