@@ -72,6 +72,19 @@ def filler(
     return address or (set_off and (group or vocative))
 
 
+def named_alone(words: tuple[str, ...]) -> bool:
+    """Whether a sentence is a thing's name alone: a noun English uses only as a noun, after determiners and
+    adjectives at most ("Zebra.", "The zebra."); it may add a thing to what was asked, as "The zebra too."
+    does, so no voice's edge drops it (h281; "Hood off.", "Nice putt." say something of a thing).
+
+    >>> named_alone(("the", "zebra")), named_alone(("hood", "off")), named_alone(("nice", "putt"))
+    (True, False, False)
+    """
+    if not words or set(english_lemmas(american(words[-1]))) != {"NOUN"}:
+        return False
+    return all(w in _DETERMINERS or "ADJ" in english_lemmas(american(w)) for w in words[:-1])
+
+
 # "is" after the subject of a remark, "'s" as the reader spaces it ("smoker s lit")
 _COPULA = frozenset("s is are was were".split())
 _DETERMINERS = frozenset("the a an our my".split())

@@ -50,7 +50,15 @@ from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import vocabulary, word_categories
 from nl2hltl2plan.language.courtesy import courtesy_pattern, courtesy_words
-from nl2hltl2plan.language.frame_filler import PART_BREAK, PART_END, Dropped, count_in, filler, parts_of
+from nl2hltl2plan.language.frame_filler import (
+    PART_BREAK,
+    PART_END,
+    Dropped,
+    count_in,
+    filler,
+    named_alone,
+    parts_of,
+)
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_narration import first_person_as_team
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
@@ -533,8 +541,13 @@ _START_SIGNAL = re.compile(
 def _voice_edges(sentences: list[str]) -> set[int]:
     """The opening and closing sentences of a voice that name nothing (h281: "Bow to your partner!",
     "Glove on, hood off.", "Good dog."): the runs at either end of sentences that `empty` finds empty with
-    any noun English knows; never every sentence (a message of frame alone is refused, by its words)."""
-    said = [empty(s, whole=True, header=k == 0, voice=True) for k, s in enumerate(sentences)]
+    any noun English knows, but a thing's name alone ("Zebra.": `named_alone`); never every sentence (a
+    message of frame alone is refused, by its words)."""
+    said = [
+        empty(s, whole=True, header=k == 0, voice=True)
+        and not named_alone(tuple(re.findall(r"[a-z]+", s.lower())))
+        for k, s in enumerate(sentences)
+    ]
     if all(said):
         return set()
     first = said.index(False)
