@@ -58,6 +58,7 @@ def test_a_sentence_that_may_ask_for_something_stays_refused(task: int, text: st
 def test_only_a_voices_edge_may_hold_any_noun() -> None:
     assert empty("Glove on, hood off", whole=True, voice=True) and not empty("Glove on, hood off", whole=True)
     assert empty("Grab your partners", whole=True, voice=True)
+    assert empty("All hands on deck", whole=True, voice=True)  # "all" of a noun that names nothing
     assert not empty("Grab your block", whole=True, voice=True)  # a scene's thing
     assert not empty("Take a bow", whole=True, voice=True)  # a world's verb on a thing
     assert not empty("Follow me down, in single file", whole=True, voice=True)  # an order
