@@ -26,8 +26,14 @@ def _keeps() -> frozenset[str]:
     return frozenset().union(*word_categories("frame_keeps.txt").values())
 
 
+# a demonstrative points at a thing in view: the noun after it may name one of the scene's ("that button")
+_POINTING = frozenset("that this these those".split())
+
+
 @lru_cache(maxsize=16384)
-def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool = False) -> bool:
+def filler(
+    words: tuple[str, ...], k: int, set_off: bool = False, address: bool = False, voice: bool = False
+) -> bool:
     """Whether `words[k]`, a word of a fragment that holds no content word, is general English filler
     that names nothing a task needs (h235): a word English knows that is used as something other than a
     noun ("luck", "easy", "gather", "lovely"), never after a determiner or a place's preposition (where it
@@ -35,7 +41,9 @@ def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool 
     the listeners, set off by a comma: a group ("campers", "buddies") or after "my" / "dear" and the words
     that describe them ("my dears", "my lovely assistants"); a British spelling is English ("marvellous").
     A word no list of English knows ("gg", a misspelt name) and a word that adds a thing ("too",
-    `frame_keeps.txt`: "the zebra too") are never filler.
+    `frame_keeps.txt`: "the zebra too") are never filler. In a `voice`'s opening or closing sentence that
+    names no content word (h281: "Glove on, hood off.", "Here's the combination."), a noun is filler too,
+    wherever it stands, except after a demonstrative ("Smash that like button": a thing pointed at).
 
     >>> filler(("best", "of", "luck"), 2), filler(("the", "zebra"), 1), filler(("zebra",), 0)
     (True, False, False)
@@ -47,6 +55,8 @@ def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool 
         return False
     if _remark_subject(words, k):
         return True
+    if voice:
+        return not any(w in _POINTING for w in words[:k])
     vocative = (set_off or address) and _after_my(words[:k])
     if any(w in _THING_BEFORE for w in words[:k]) and not vocative:
         return False
@@ -60,6 +70,19 @@ def filler(words: tuple[str, ...], k: int, set_off: bool = False, address: bool 
         not kinds and word.endswith("s") and english_word(word[:-1])
     )
     return address or (set_off and (group or vocative))
+
+
+def named_alone(words: tuple[str, ...]) -> bool:
+    """Whether a sentence is a thing's name alone: a noun English uses only as a noun, after determiners and
+    adjectives at most ("Zebra.", "The zebra."); it may add a thing to what was asked, as "The zebra too."
+    does, so no voice's edge drops it (h281; "Hood off.", "Nice putt." say something of a thing).
+
+    >>> named_alone(("the", "zebra")), named_alone(("hood", "off")), named_alone(("nice", "putt"))
+    (True, False, False)
+    """
+    if not words or set(english_lemmas(american(words[-1]))) != {"NOUN"}:
+        return False
+    return all(w in _DETERMINERS or "ADJ" in english_lemmas(american(w)) for w in words[:-1])
 
 
 # "is" after the subject of a remark, "'s" as the reader spaces it ("smoker s lit")

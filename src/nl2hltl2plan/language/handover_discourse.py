@@ -50,7 +50,15 @@ from typing import NamedTuple
 
 from nl2hltl2plan.language.content_words import vocabulary, word_categories
 from nl2hltl2plan.language.courtesy import courtesy_pattern, courtesy_words
-from nl2hltl2plan.language.frame_filler import PART_BREAK, PART_END, Dropped, count_in, filler, parts_of
+from nl2hltl2plan.language.frame_filler import (
+    PART_BREAK,
+    PART_END,
+    Dropped,
+    count_in,
+    filler,
+    named_alone,
+    parts_of,
+)
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_narration import first_person_as_team
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
@@ -133,12 +141,18 @@ _CALL = re.compile(
 )
 
 
+# the readers' words for a thing or an action no world has, and for people: in a voice's opening or closing
+# they name nothing a task could take ("Lace up your shoes", "Correct answer", "Doors closing")
+_NO_WORLDS = frozenset({"noun_unsupported", "verb_unsupported", "verb_unsupported_before_object", "person"})
+
+
 @lru_cache(maxsize=16384)  # pure; a sentence is read again for each restated reading
-def _content_word(word: str) -> bool:
+def _content_word(word: str, voice: bool = False) -> bool:
     # an inflection's stem of at least four letters ("called": call; "noted" is not "not")
     stems = {word[: -len(end)] for end in ("s", "ed") if word.endswith(end) and len(word) - len(end) >= 4}
     forms = {word} | stems
-    return any(f in ws for ws in vocabulary().values() for f in forms)
+    skipped = _NO_WORLDS if voice else frozenset()
+    return any(f in ws for name, ws in vocabulary().items() if name not in skipped for f in forms)
 
 
 @lru_cache(maxsize=16384)  # pure; a sentence is read again for each restated reading
@@ -151,11 +165,13 @@ def empty(
     outer: bool = False,
     general: bool = True,
     names: frozenset[str] = frozenset(),
+    voice: bool = False,
 ) -> bool:
     """True when the fragment says nothing a spec can use (see the module docstring); a `label` (before a
     colon) may also hold the words that announce the work ("Steps", "Here's the idea"), a `whole`
     sentence may also be one that ends the message ("Done."), and the instruction's `header` (its first
-    sentence) may name its record ("Run 6", "Ticket #48", "3 Dec"; later ones may number steps).
+    sentence) may name its record ("Run 6", "Ticket #48", "3 Dec"; later ones may number steps). A
+    `voice`'s opening or closing sentence may hold any noun English knows (`filler`: "Hood off.").
 
     >>> empty("Re: today's job"), empty("Copy that"), empty("pillar move"), empty("Optional")
     (True, True, False, False)
@@ -181,6 +197,8 @@ def empty(
     # a tricky one") name nothing a task needs
     if general:
         text = _A_ONE.sub(lambda m: m[0] if _content_word(m[1]) else " ", _DO_IT.sub(" ", text))
+    if voice:
+        text = _voice_words(text)
     if MEANING.search(text) or _ACTION.search(text):
         return False
     parts = parts_of(re.findall(r"[a-z0-9]+", text), marked)
@@ -190,11 +208,11 @@ def empty(
     def said(ws: tuple[str, ...], k: int) -> bool:
         # a label's words, a word alone at an edge or by another part ("Squad, ...", "..., sweetheart"): nouns
         address = label or (set_off and len(ws) == 1 and (outer or parted))
-        return filler(ws, k, set_off, address)
+        return filler(ws, k, set_off, address, voice)
 
     def frame_word(ws: tuple[str, ...], k: int) -> bool:
         w = ws[k]
-        if _content_word(w) or w in names:
+        if _content_word(w, voice) or w in names:
             return False
         return w in frame.single or bool(_HESITATION.fullmatch(w)) or (general and said(ws, k))
 
@@ -225,6 +243,19 @@ def _record_kind(words: str) -> bool:
     )
 
 
+_ARTICLE_A = re.compile(r"\ba\s+(?!(?:and|or|nor|to|through|then|before|after)\b)(?=[a-z]{2,})")
+# in a voice's opening or closing: a verb on the listener's own things ("Grab your partners": never a scene's
+# thing), and "all" / "every" / "each" on a noun that names none ("all eyes on me", "all hands on deck")
+_ON_YOURS = re.compile(rf"\b(?:{VERB}|{TOUCH})\s+(?=your\s+[a-z])")
+_ALL_OF = re.compile(r"\b(?:all|every|each)\s+(?=([a-z]+))")
+
+
+def _voice_words(text: str) -> str:
+    """A voice's sentence without what names nothing there: "a" before a word (an article, no region: "we
+    have a visual", "what a gallop"), a verb on the listener's own things, a quantifier of a noun that names
+    nothing (the noun itself stays, to be judged as frame)."""
+    text = _ON_YOURS.sub(" ", _ARTICLE_A.sub(" ", text))
+    return _ALL_OF.sub(lambda m: m[0] if MEANING.fullmatch(m[1]) or _content_word(m[1], True) else " ", text)
 _DO_IT = re.compile(r"\b(?:do|does|did)\s+it\b(?!\s+(?:again|twice|\d))")
 _A_ONE = re.compile(r"\ban?\s+([a-z]+)\s+one\b")
 _LABEL = re.compile(r"^\s*([^:]{1,60}?)\s*:\s*(?=\S)")
@@ -507,13 +538,33 @@ _START_SIGNAL = re.compile(
 )
 
 
+def _voice_edges(sentences: list[str]) -> set[int]:
+    """The opening and closing sentences of a voice that name nothing (h281: "Bow to your partner!",
+    "Glove on, hood off.", "Good dog."): the runs at either end of sentences that `empty` finds empty with
+    any noun English knows, but a thing's name alone ("Zebra.": `named_alone`); never every sentence (a
+    message of frame alone is refused, by its words)."""
+    said = [
+        empty(s, whole=True, header=k == 0, voice=True)
+        and not named_alone(tuple(re.findall(r"[a-z]+", s.lower())))
+        for k, s in enumerate(sentences)
+    ]
+    if all(said):
+        return set()
+    first = said.index(False)
+    last = len(said) - said[::-1].index(False)
+    return set(range(first)) | set(range(last, len(said)))
+
+
 def plain(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
     """The sentences with empty fragments, start signals and a sign-off's name dropped, reported speech and
     first-person narration said as the team's commands (see the module docstring); what only the general
     filler rule dropped is added to `dropped`, where given."""
     out = []
-    for k, sentence in enumerate(_unsigned(sentences, dropped)):
-        if frame_gone(sentence, Dropped(dropped), whole=True, header=k == 0) or _START_SIGNAL.match(sentence):
+    sentences = _unsigned(sentences, dropped)
+    edges = _voice_edges(sentences)
+    for k, sentence in enumerate(sentences):
+        framed = frame_gone(sentence, Dropped(dropped), whole=True, header=k == 0, voice=k in edges)
+        if framed or _START_SIGNAL.match(sentence):
             continue
         if k == 0 and _called(sentence.rstrip(" ,.!:")):  # a letter's greeting on its own: "Dear Sam,"
             continue

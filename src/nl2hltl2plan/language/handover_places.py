@@ -12,7 +12,7 @@ from typing import Literal
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.handover_scene import COUNTS, LETTER, NOUN, PLACE_NOUN, Marked, Place, Scene
-from nl2hltl2plan.language.handover_words import APPOSITION, EMPTY, VERB
+from nl2hltl2plan.language.handover_words import APPOSITION, EMPTY, NOW, VERB
 
 
 def mark_place_pronouns(
@@ -223,7 +223,7 @@ def _mark_starts(m: Marked, scene: Scene) -> None:
         r"(?:is|was|lies|lay|sits|sat|stands|started|starts|locates|stays|rests)\s*"
         r"(?:currently\s+|now\s+|"
         r"initially\s+|at\s+first\s+)?(?:located|locating|lying|placed|sitting|standing|from)?\s*"
-        r"(?:currently|(?:right\s+)?now|initially|at\s+first|at\s+the\s+start|at\s+the\s+moment)?\s*\)?"
+        rf"{NOW}?\s*\)?"
     )
 
     def where_of(match: re.Match[str]) -> str:  # "back (to) where the red block is": a place to go to

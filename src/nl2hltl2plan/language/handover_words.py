@@ -31,6 +31,12 @@ NEG = (
     r"(?:cannot|can\s+not|can\s+t|must\s+not|mustn\s+t|should\s+not|shouldn\s+t|may\s+not|do\s+not|"
     r"does\s+not|don\s+t|doesn\s+t|(?:is|are)\s+not\s+allowed\s+to|never|not)"
 )
+# "now" as a scene statement says it, after its verb ("where the red block is at present / sitting at the
+# moment / for the time being")
+NOW = (
+    r"(?:currently|presently|(?:right\s+|just\s+)?now|initially|at\s+first|at\s+the\s+start|at\s+present|"
+    r"at\s+(?:the|this)\s+(?:moment|time)|for\s+(?:now|the\s+time\s+being))"
+)
 SWAP = r"(?:exchang(?:e|ing)|swap(?:ping)?|switch(?:ing)?|interchang(?:e|ing)|trad(?:e|ing))"
 SWAPPED = r"(?:swapped|exchanged|switched|interchanged)"
 TOUCH = r"(?:touch|pick\s+up|pick|grasp|grab|handle|move|lift)"
