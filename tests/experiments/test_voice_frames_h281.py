@@ -29,7 +29,6 @@ PLACEMENT = "Put the three blocks on H, I and J, one block per region."
 
 WRITTEN = [
     (3, DEV["bowling_captain"]["3"]),  # "Lace up your shoes. ... Strike!"
-    (2, DEV["quizmaster"]["2"]),  # "Fingers on buzzers! ... Correct answer."
     (4, DEV["astronaut"]["4"]),  # "Houston, we have a visual. ... where the red block is at present. ..."
     (2, "Glove on, hood off. " + PLACEMENT + " Grab your partners!"),
 ]
@@ -40,6 +39,8 @@ KEPT = [
     (2, "Follow me down, in single file. " + PLACEMENT),  # an order
     (2, "Put the three blocks on H, I and J. Hood off. One block per region."),  # between two commands
     (2, PLACEMENT + " Smash that like button."),  # a thing pointed at
+    (2, DEV["quizmaster"]["2"]),  # "... Correct answer.": "correct" may be a command on a thing (lead's mend)
+    (2, PLACEMENT + " Nice and steady, stoke the forge."),  # a verb with an object (h235, h220, h263)
 ]
 
 

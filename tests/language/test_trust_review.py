@@ -79,9 +79,11 @@ def test_having_done_so_keeps_the_order(backend):
     assert reading(text.replace("Having done so", "Meanwhile"), backend) == ([MUG, APPLE], set())
 
 
-# 6. "The mug is in the sink" states where it is: no washing step, no task for the mug
+# 6. "The mug is in the sink" states where it is: no washing step; "put it in the microwave" then moves that
+# mug from the sink (h277's place said first), so the mug's task is a placing, never a washing
 def test_a_stated_place_is_no_washing_task(backend):
-    refused("Put the apple in the fridge. The mug is in the sink, put it in the microwave.", backend, "mug")
+    text = "Put the apple in the fridge. The mug is in the sink, put it in the microwave."
+    assert reading(text, backend) == (["place Apple -> Fridge", "place Mug -> Microwave"], set())
 
 
 # 7, 8. "any" as a determiner frees nothing; "at any time" frees its task

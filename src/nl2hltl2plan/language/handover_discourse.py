@@ -62,6 +62,7 @@ from nl2hltl2plan.language.frame_filler import (
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_narration import first_person_as_team
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
+from nl2hltl2plan.language.spelling import american, english_lemmas
 
 # words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
 MEANING = re.compile(
@@ -538,6 +539,23 @@ _START_SIGNAL = re.compile(
 )
 
 
+# what may follow a command's verb without being a thing it acts on ("Grab your partners", "Hold on")
+_NO_OBJECT = frozenset("your yours yourself yourselves on off up down out in it".split())
+
+
+def _commanded(sentence: str) -> bool:
+    """Whether a clause of the sentence is a command with an object ("sing a song", "Stoke the forge"): an
+    action on a thing, which no voice's edge drops (h235: a verb with an object is read or refused); or
+    the sentence is a word no lexicon of English forms knows, alone (a name)."""
+    if len(ws := re.findall(r"[a-z]+", sentence.lower())) == 1 and not english_lemmas(american(ws[0])):
+        return True  # a name alone, no sign-off's ("Ana"): it may name who acts, so it is read or refused
+    for clause in re.split(r"[,;:!?.]", sentence.lower()):
+        ws = re.findall(r"[a-z]+", clause)
+        if len(ws) >= 2 and "VERB" in english_lemmas(american(ws[0])) and ws[1] not in _NO_OBJECT:
+            return True
+    return False
+
+
 def _voice_edges(sentences: list[str]) -> set[int]:
     """The opening and closing sentences of a voice that name nothing (h281: "Bow to your partner!",
     "Glove on, hood off.", "Good dog."): the runs at either end of sentences that `empty` finds empty with
@@ -546,6 +564,7 @@ def _voice_edges(sentences: list[str]) -> set[int]:
     said = [
         empty(s, whole=True, header=k == 0, voice=True)
         and not named_alone(tuple(re.findall(r"[a-z]+", s.lower())))
+        and not _commanded(s)
         for k, s in enumerate(sentences)
     ]
     if all(said):
