@@ -3130,8 +3130,8 @@ HELD_H270: dict[str, dict[int, list[str]]] = {
 # HELD_H210.
 DEV_H280: dict[str, dict[int, list[str]]] = {
     "dog_groomer": {
-        1: ["Next pup on the table! The green apple onto the blue plate and the orange onto the yellow plate. "
-            "Whichever you start with, I'm not bothered."],
+        1: ["Next pup on the table! The green apple onto the blue plate and the orange onto the yellow "
+            "plate. Whichever you start with, I'm not bothered."],
         2: ["Three to brush out today: green apple into the pink plate, orange into the yellow plate, red "
             "apple into the blue plate. The order of grooming is your call."],
         3: ["Bath time for four. Carrot in the blue plate, orange in the yellow plate, green apple in the "
@@ -3184,8 +3184,8 @@ HELD_H280: dict[str, dict[int, list[str]]] = {
             "both are seated, the carrot and the red apple into the blue plate, again in any order."],
     },
     "cab_driver": {
-        1: ["Where to, guv? Green apple to the blue plate, orange to the yellow plate. The order of the drops "
-            "is your call."],
+        1: ["Where to, guv? Green apple to the blue plate, orange to the yellow plate. The order of the "
+            "drops is your call."],
         2: ["Three drop-offs: the green apple to the pink plate, the orange to the yellow plate and the red "
             "apple to the blue plate. I don't mind which comes first."],
         3: ["Busy night on the meter. Carrot to the blue plate, orange to the yellow plate, green apple to "

@@ -442,16 +442,18 @@ def unread_words(instruction: str, toks: Tokens | None = None) -> list[Unread]:
     return unknown + order + misspelt_words(instruction, {u.words for u in order})
 
 
-FOREIGN_REASON = "no word of it is one the reader knows (a foreign or unknown phrase): say it in English or leave it out"
+FOREIGN_REASON = (
+    "no word of it is one the reader knows (a foreign or unknown phrase): say it in English or leave it out"
+)
 _SENTENCE_PART = re.compile(r"[^.!?;:,\n]+")
 
 
 def foreign_sentences(instruction: str) -> list[Unread]:
     """A sentence (or a part set off by a comma or colon) in which no word is one the reader's lists know
-    and some word no list of English knows ("Rien ne va plus.", "Zorblax quing."): it was read as nothing, and what it
-    says (a foreign "no more", a name) is not known to be frame. Only the frame rule drops a sentence, and
-    a word English does not know is never its filler (`frame_filler.filler`), so it is unread, named in the
-    user's words."""
+    and some word no list of English knows ("Rien ne va plus.", "Zorblax quing."): it was read as nothing,
+    and what it says (a foreign "no more", a name) is not known to be frame. Only the frame rule drops a
+    sentence, and a word English does not know is never its filler (`frame_filler.filler`), so it is
+    unread, named in the user's words."""
     out = []
     for m in _SENTENCE_PART.finditer(instruction):
         words = re.findall(r"[a-z]+", m[0].lower())
