@@ -107,7 +107,8 @@ def named_where(refused: Exception, instruction: str) -> Exception:
         start = sentence_start(instruction, x.char_start)
         after = _SENTENCE_BREAK.search(instruction, x.char_end)
         sentence = " ".join(instruction[start : after.start() if after else None].split())
-        if x.surface.lower() == camel_words(m[1]) and sentence == " ".join(instruction.split()).rstrip(".!?"):
-            return refused  # "put the statue in the fridge": the one sentence names it as the type does
+        alone = sentence == " ".join(instruction.split()).rstrip(".!?")
+        if alone and (x.surface.lower() == camel_words(m[1]) or repr(x.surface) in said):
+            return refused  # "put the statue in the fridge": one sentence, its word named as said
         return type(refused)(f"no {m[1]} (for {x.surface!r} in {sentence!r}){said[m.end() :]}")
     return refused
