@@ -279,9 +279,9 @@ def _refuse_leftovers(m: Marked, sentence: str) -> None:
     words = [w for w in words if not re.fullmatch(r"[BPG]\d+|A", w)]
     # a refusal quotes the user's own words: a word a rewrite put in ("comes after") is none of them
     said = {w.lower() for w in re.findall(r"[A-Za-z']+\d*|\d+", sentence.replace("’", "'"))}
-    words = [w for w in words if w.lower() in said or w.lower() in _EXPANDED]
-    if unused or words:
-        what = ", ".join(repr(x) for x in unused + words) or repr(" ".join(sentence.split()))
+    own = [w for w in words if w.lower() in said or w.lower() in _EXPANDED]
+    if unused or words:  # (a word only a rewrite wrote is still unread: the sentence is quoted for it)
+        what = ", ".join(repr(x) for x in unused + own) or repr(" ".join(sentence.split()))
         raise HTTError(f"the handover parser cannot use {what} in {sentence.strip()!r}; rephrase it")
 
 

@@ -445,11 +445,11 @@ def unread_words(instruction: str, toks: Tokens | None = None) -> list[Unread]:
 FOREIGN_REASON = (
     "no word of it is one the reader knows (a foreign or unknown phrase): say it in English or leave it out"
 )
-_SENTENCE_PART = re.compile(r"[^.!?;:,\n]+")
+_SENTENCE_PART = re.compile(r"[^.!?;,\n]+")  # (not at a colon: "[10:02] Kai: ..." labels its line)
 
 
 def foreign_sentences(instruction: str) -> list[Unread]:
-    """A sentence (or a part set off by a comma or colon) in which no word is one the reader's lists know
+    """A sentence (or a part set off by a comma) in which no word is one the reader's lists know
     and some word no list of English knows ("Rien ne va plus.", "Zorblax quing."): it was read as nothing,
     and what it says (a foreign "no more", a name) is not known to be frame. Only the frame rule drops a
     sentence, and a word English does not know is never its filler (`frame_filler.filler`), so it is
