@@ -3119,3 +3119,78 @@ HELD_H270: dict[str, dict[int, list[str]]] = {
             "plate, either order again. Thank you, players."],
     },
 }
+
+
+# h280's batches (session 33, issues 28 and 24): the classes HELD_H270 left (any order said the voice's way,
+# a voice's sentence around the goals, placing verbs and stage labels of the voice), four rephrasings of
+# each of the paper's four tabletop tasks, one per voice, voices no batch above uses. HELD_H280 (a bus
+# driver, a cinema usher, a cab driver) was written with DEV_H280 (a dog groomer, a pit-crew chief, a
+# postman) and committed before any rule changed; it is scored once at the end, unchanged
+# (results/experiments/h280.md). Each line's expected reading is its task's ground truth, as listed above
+# HELD_H210.
+DEV_H280: dict[str, dict[int, list[str]]] = {
+    "dog_groomer": {
+        1: ["Next pup on the table! The green apple onto the blue plate and the orange onto the yellow "
+            "plate. Whichever you start with, I'm not bothered."],
+        2: ["Three to brush out today: green apple into the pink plate, orange into the yellow plate, red "
+            "apple into the blue plate. The order of grooming is your call."],
+        3: ["Bath time for four. Carrot in the blue plate, orange in the yellow plate, green apple in the "
+            "green plate, red apple in the pink plate. I don't mind which goes first."],
+        4: ["Two stations. The green apple and the orange go into the yellow plate first, either one. When "
+            "both are in, the carrot and the red apple go into the blue plate, any order."],
+    },
+    "pit_crew_chief": {
+        1: ["Box, box! Green apple onto the blue plate, orange onto the yellow plate, in any order. Go go "
+            "go!"],
+        2: ["Pit stop plan: the green apple into the pink plate, the orange into the yellow plate and the "
+            "red apple into the blue plate. The sequence is up to you, nobody minds."],
+        3: ["Full service. Carrot onto the blue plate, orange onto the yellow plate, green apple onto the "
+            "green plate, red apple onto the pink plate. Do them however you like."],
+        4: ["Two phases. Phase one: the green apple and the orange into the yellow plate, in either order. "
+            "Phase two, only once both are in: the carrot and the red apple into the blue plate, in either "
+            "order."],
+    },
+    "postman": {
+        1: ["Morning delivery. The green apple goes on the blue plate, the orange goes on the yellow plate. "
+            "No particular order, I'm not fussy."],
+        2: ["Three parcels on my round: the green apple to the pink plate, the orange to the yellow plate, "
+            "the red apple to the blue plate. Any order is fine by me."],
+        3: ["Big round today. Carrot to the blue plate, orange to the yellow plate, green apple to the green "
+            "plate and red apple to the pink plate; the order of the round is your choice."],
+        4: ["First street: the green apple and the orange to the yellow plate, in any order. Only after both "
+            "are delivered, the carrot and the red apple to the blue plate, in any order."],
+    },
+}
+HELD_H280: dict[str, dict[int, list[str]]] = {
+    "bus_driver": {
+        1: ["Hold tight, please. The green apple onto the blue plate and the orange onto the yellow plate. "
+            "Whoever gets off first, I'm not bothered."],
+        2: ["Three stops on this route: the green apple into the pink plate, the orange into the yellow "
+            "plate, the red apple into the blue plate. The order of the stops is your choice."],
+        3: ["Last bus tonight. Carrot into the blue plate, orange into the yellow plate, green apple into "
+            "the green plate and red apple into the pink plate, in any order, the driver doesn't mind."],
+        4: ["Two stages on this route. First the green apple and the orange go into the yellow plate, in "
+            "either order. Only once both are in, the carrot and the red apple go into the blue plate, in "
+            "either order."],
+    },
+    "cinema_usher": {
+        1: ["Tickets, please. The green apple goes on the blue plate and the orange goes on the yellow "
+            "plate. Whichever goes first, I'm not fussy."],
+        2: ["Three seats to fill: green apple in the pink plate, orange in the yellow plate, red apple in "
+            "the blue plate. Seat them in whatever order you like."],
+        3: ["Full house tonight. The carrot in the blue plate, the orange in the yellow plate, the green "
+            "apple in the green plate and the red apple in the pink plate. Nobody minds the order."],
+        4: ["Two rows. The green apple and the orange into the yellow plate first, either one first. When "
+            "both are seated, the carrot and the red apple into the blue plate, again in any order."],
+    },
+    "cab_driver": {
+        1: ["Where to, guv? Green apple to the blue plate, orange to the yellow plate. The order of the "
+            "drops is your call."],
+        2: ["Three drop-offs: the green apple to the pink plate, the orange to the yellow plate and the red "
+            "apple to the blue plate. I don't mind which comes first."],
+        3: ["Busy night on the meter. Carrot to the blue plate, orange to the yellow plate, green apple to "
+            "the green plate, red apple to the pink plate; any order, I'm not fussed."],
+        4: ["First fare: the green apple and the orange to the yellow plate, in either order. Once both are "
+            "dropped, the carrot and the red apple to the blue plate, in either order."],
+    },
+}

@@ -154,7 +154,8 @@ def phrase_words(filename: str, kind: str) -> frozenset[str]:
 
 
 def _phrase_pattern(phrase: str) -> str:
-    """One line of `free_order.txt` as a regular expression: "(a|b)" one of, "[x]" optional."""
+    """One line of `free_order.txt` as a regular expression: "(a|b)" one of, "[x]" optional, "*" any one
+    word."""
     toks = re.findall(r"[()\[\]|]|[^\s()\[\]|]+", phrase)
     pos = 0
 
@@ -186,6 +187,8 @@ def _phrase_pattern(phrase: str) -> str:
 
 
 def _word(word: str) -> str:
+    if word == "*":  # any one word ("the order of * is your choice": of play, of the stops)
+        return "[a-z]+"
     return re.escape(word).replace("n't", "\\s*n[o']?t")
 
 

@@ -277,9 +277,16 @@ def _refuse_leftovers(m: Marked, sentence: str) -> None:
     unused += [_unmarked(m.places[int(k)].text, m) for k in re.findall(r"\bP(\d+)\b", m.text)]
     words = [w for w in re.findall(r"[A-Za-z']+\d*|\d+", m.text) if w not in FILLER]
     words = [w for w in words if not re.fullmatch(r"[BPG]\d+|A", w)]
-    if unused or words:
-        what = ", ".join(repr(x) for x in unused + words)
+    # a refusal quotes the user's own words: a word a rewrite put in ("comes after") is none of them
+    said = {w.lower() for w in re.findall(r"[A-Za-z']+\d*|\d+", sentence.replace("’", "'"))}
+    own = [w for w in words if w.lower() in said or w.lower() in _EXPANDED]
+    if unused or words:  # (a word only a rewrite wrote is still unread: the sentence is quoted for it)
+        what = ", ".join(repr(x) for x in unused + own) or repr(" ".join(sentence.split()))
         raise HTTError(f"the handover parser cannot use {what} in {sentence.strip()!r}; rephrase it")
+
+
+# what the reader writes out of the user's contractions ("don't": 'do', 'not'), still the user's words
+_EXPANDED = frozenset("do does did not is are will would have has had am can cannot".split())
 
 
 def _unmarked(text: str, m: Marked) -> str:

@@ -485,7 +485,8 @@ REWRITES: tuple[tuple[str, str], ...] = (
         " ",
     ),
     (r"\bprecedes?\b", "comes before"),
-    (r"\bfollows?\b", "comes after"),
+    # (not "as follows" nor an imperative "Follow me ...": a refusal would name "comes after", never said)
+    (r"(?<!\bas\s)(?<!^)(?<!^\s)\bfollows?\b", "comes after"),
     (
         r"\b(?:nobody|no\s+one|none\s+of\s+the\s+(?:robot\s+)?arms|neither\s+(?:of\s+the\s+)?(?:robot\s+)?arms?)\b",
         "no arm",

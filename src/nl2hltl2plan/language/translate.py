@@ -39,6 +39,7 @@ from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.llm_reading import cross_check, llm_leaf_actions, read_with_llm
 from nl2hltl2plan.language.ltl_generation import llm_generate_ltl, translator_client
+from nl2hltl2plan.language.missing_types import named_where
 from nl2hltl2plan.language.negations import (
     Negation,
     nothing_to_do,
@@ -172,7 +173,7 @@ def translate(
         except (HTTError, WorldError) as refused:
             # the world's rereading (checked by check 1 on the words it read), or the refusal as it was
             if (again := reread()) is None:
-                raise reader.refusal(refused, instruction, prepared, rest) from None
+                raise reader.refusal(named_where(refused, instruction), instruction, prepared, rest) from None
             res = again
         else:  # the grammar's reading: the world's own reading replaces it where partial, or may doubt it
             if res.partial and (again := reread()) is not None:

@@ -437,8 +437,31 @@ def unread_words(instruction: str, toks: Tokens | None = None) -> list[Unread]:
     unknown = unknown_verbs(instruction, toks) + placeless_arrangements(instruction, toks)
     unknown += exclaimed_things(instruction) + unknown_things(instruction, toks)
     unknown += unknown_modifiers(instruction, toks) + done_already(instruction)
+    unknown += foreign_sentences(instruction)
     order = misspelt_order_words(instruction)
     return unknown + order + misspelt_words(instruction, {u.words for u in order})
+
+
+FOREIGN_REASON = (
+    "no word of it is one the reader knows (a foreign or unknown phrase): say it in English or leave it out"
+)
+_SENTENCE_PART = re.compile(r"[^.!?;,\n]+")  # (not at a colon: "[10:02] Kai: ..." labels its line)
+
+
+def foreign_sentences(instruction: str) -> list[Unread]:
+    """A sentence (or a part set off by a comma) in which no word is one the reader's lists know
+    and some word no list of English knows ("Rien ne va plus.", "Zorblax quing."): it was read as nothing,
+    and what it says (a foreign "no more", a name) is not known to be frame. Only the frame rule drops a
+    sentence, and a word English does not know is never its filler (`frame_filler.filler`), so it is
+    unread, named in the user's words."""
+    out = []
+    for m in _SENTENCE_PART.finditer(instruction):
+        words = re.findall(r"[a-z]+", m[0].lower())
+        if not words or any(known_word(w) or categories(w) for w in words):
+            continue
+        if any(not english_word(w) for w in words):
+            out.append(Unread(" ".join(m[0].split()), "words", FOREIGN_REASON))
+    return out
 
 
 # a placing said as done ("the morning carer already put the mug in the sink"): a statement, no request

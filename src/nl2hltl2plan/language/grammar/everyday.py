@@ -161,7 +161,10 @@ _BELONGS = re.compile(r"\bbelongs?\s+(?:in|on|to)\b", re.I)
 # that the rules read), a closing courtesy after it too (", doesn't matter which first please", ", order
 # doesn't matter, thanks!")
 _THANKS_LAST = rf"(?:\s*,?\s*(?:please|{courtesy_pattern('closing')}))?"
-_CLOSING_FREE_ORDER = re.compile(rf"\s*[,;.]\s*{_FREE_ORDER}{_THANKS_LAST}\s*[.!]?\s*$", re.I)
+# (two said one after the other are one remark: "Whichever you start with, I'm not bothered.")
+_CLOSING_FREE_ORDER = re.compile(
+    rf"\s*[,;.]\s*{_FREE_ORDER}(?:\s*,\s*{_FREE_ORDER})?{_THANKS_LAST}\s*[.!]?\s*$", re.I
+)
 
 
 # contractions typed without the apostrophe ("when thats done", "dont"); not "its", "lets", "well", "were"
