@@ -40,7 +40,11 @@ def read(text: str, scene: str) -> tuple[list[str], list[str], list[str]] | str:
     [
         ("put the remote on the sofa later", "FloorPlan207", "'later' (time)"),
         ("put the pillow on the sofa or under it", "FloorPlan207", "'under it' (place)"),
-        ("cut the bread into three slices and put them on the dining table", "FloorPlan27", "'into three slices'"),
+        (
+            "cut the bread into three slices and put them on the dining table",
+            "FloorPlan27",
+            "'into three slices'",
+        ),
     ],
 )
 def test_plan_refuses_what_it_dropped_naming_it(
@@ -58,7 +62,10 @@ def test_plan_refuses_what_it_dropped_naming_it(
         ("put the apple in the fridge daily", "FloorPlan5"),
         ("put the apple in the fridge, every day", "FloorPlan5"),
         ("put a slice of egg in the microwave", "FloorPlan12"),
-        ("Take two mugs: put one in the sink, the other in the cabinet, and the third on the counter.", "FloorPlan5"),
+        (
+            "Take two mugs: put one in the sink, the other in the cabinet, and the third on the counter.",
+            "FloorPlan5",
+        ),
     ],
 )
 def test_never_read_whole(text: str, scene: str) -> None:

@@ -108,7 +108,8 @@ def _cut_into(words: list[str], i: int, cats: frozenset[str], parse: ParseUsage)
     took = [max(1, t.count) for t in parse.tasks if t.sliced]
     if n in took or n == sum(took):
         return None
-    why = f"the base tasks take {' + '.join(map(str, took)) or 'no'} slices: a cut into {n} is no count a task keeps"
+    took_said = " + ".join(map(str, took)) or "no"
+    why = f"the base tasks take {took_said} slices: a cut into {n} is no count a task keeps"
     return Unread(" ".join(words[i - 1 : i + 2]), "count", why)
 
 

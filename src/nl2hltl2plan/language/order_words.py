@@ -123,7 +123,8 @@ _AFTER_DELAY = frozenset({"on", "please", "thanks", "thank", "you", "ok", "okay"
 
 def _closing_delay(words: list[str]) -> str | None:
     """The `delay` word ("later", "afterwards") that closes the request, only courtesy after it ("put the
-    remote on the sofa later, please"); inside, it orders a task's own steps ("chill it and later put ...")."""
+    remote on the sofa later, please"); inside, it orders a task's own steps ("chill it and later put
+    ...")."""
     late = [i for i, w in enumerate(words) if "delay" in categories(w)]
     return words[late[-1]] if late and set(words[late[-1] + 1 :]) <= _AFTER_DELAY else None
 

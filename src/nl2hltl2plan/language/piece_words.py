@@ -75,7 +75,8 @@ def slices_said(text: str) -> str:
 
 def unsure_pieces(lowered: str) -> list[Unread]:
     """Check 1's refusals of a part that may be no slice ("a leaf of lettuce"), said of a sliceable thing,
-    and of a slice of a thing no knife cuts into slices ("a slice of egg": read as a cracked egg at exit 0)."""
+    and of a slice of a thing no knife cuts into slices ("a slice of egg": read as a cracked egg at exit
+    0)."""
     _, _, unsure = _patterns()
     out = []
     for m in unsure.finditer(lowered):
@@ -93,5 +94,7 @@ def unsure_pieces(lowered: str) -> list[Unread]:
 
 NO_SLICES = "no knife cuts it into slices (an egg is cracked): no base task takes a slice of it"
 _SLICE_WORD = r"(?:slices?|pieces?|wedges?|chunks?|bits?)"
-_SLICE_BEFORE = re.compile(rf"\b(?:{_SLICE_WORD}\s+of|slice|cut|chop)(?:\s+up)?\s+(?:the\s+|an?\s+|that\s+)?$")
+_SLICE_BEFORE = re.compile(
+    rf"\b(?:{_SLICE_WORD}\s+of|slice|cut|chop)(?:\s+up)?\s+(?:the\s+|an?\s+|that\s+)?$"
+)
 _SLICE_AFTER = re.compile(rf"\s+{_SLICE_WORD}\b")

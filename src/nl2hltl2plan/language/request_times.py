@@ -137,7 +137,8 @@ def _time() -> re.Pattern[str]:
 @lru_cache(maxsize=1)
 def _closing_later() -> re.Pattern[str]:
     """A later day (no deadline's "for" or "by") set off at the end of a sentence: "..., tomorrow.",
-    "..., on Friday", "- tonight!", "..., next week, please."; or a short wait closing it ("... in a bit.")."""
+    "..., on Friday", "- tonight!", "..., next week, please."; or a short wait closing it ("... in a
+    bit.")."""
     w = {kind: _any(ws) for kind, ws in _words().items()}
     later = rf"(?:(?:on|this|next)\s+)?(?:{w['when']})s?(?:\s+(?:{w['part']}))?|next\s+(?:{w['part']})"
     closing = rf"(?:(?:,|\s[-–—]+)\s*(?P<day>{later})|\s*,?\s+(?P<wait>{w['delay']}))"
