@@ -126,7 +126,9 @@ def _closing_delay(words: list[str]) -> str | None:
     remote on the sofa later, please"); inside, it orders a task's own steps ("chill it and later put
     ...")."""
     late = [i for i, w in enumerate(words) if "delay" in categories(w)]
-    return words[late[-1]] if late and set(words[late[-1] + 1 :]) <= _AFTER_DELAY else None
+    if not late or words[late[-1] - 1] == "for":  # "leave the bread out for later": kept for a later use
+        return None
+    return words[late[-1]] if set(words[late[-1] + 1 :]) <= _AFTER_DELAY else None
 
 
 def frees_an_order(
