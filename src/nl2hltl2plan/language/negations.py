@@ -349,6 +349,7 @@ def _objects_and_places(
     a place after "from" / "off" only says where the thing is ("don't move the vase from the table")."""
     things: list[str] = []
     places: list[str] = []
+    last: Mention | None = None  # the mention before, where it was a place
     for m in inside:
         types = grounder.resolve(m.entry)
         if not types:
@@ -356,8 +357,12 @@ def _objects_and_places(
         before = words[max(0, m.start - 3) : m.start]
         if things and {"from", "off"} & set(before):
             continue
-        is_place = any(w in PREPS for w in before) and things
+        # "never put the egg in the fridge or the microwave": a place listed after a place is one too
+        listed = last is not None and set(words[last.end : _determined(words, m.start)]) <= {"or", "nor", ","}
+        listed = listed and not PREPS & set(words[m.end : m.end + 2])  # "or the apple in the sink": a thing
+        is_place = (any(w in PREPS for w in before) or listed) and things
         (places if is_place else things).extend(types)
+        last = m if is_place else None
     return (things or None), places
 
 
