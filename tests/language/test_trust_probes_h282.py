@@ -4,7 +4,8 @@ Each case was read at exit 0 with part of the text dropped before h282:
 - a later time said of a one-task request ("... later", "... in a bit") or a habit ("daily", "every day");
 - the other place of a choice said only next to the first ("on the sofa or under it");
 - a cut's own count ("cut the bread into three slices and put them ...") and a slice of an egg;
-- a ban of a list of places ("not the microwave or the sink": it forbade put(Microwave,Fridge));
+- a ban of a list of places ("not the microwave or the sink", "never put the egg in the fridge or the
+  microwave": each forbade put(Microwave,Fridge)); a slice of a thing no knife cuts ("a slice of mug");
 - a pair whose sentence names a third ("two mugs: one ..., the other ..., the third ...").
 The near misses beside them must read as before. The many-case tables are probes_h282dev/held.txt, swept
 under `-m sweep` (`test_user_styles`)."""
@@ -62,6 +63,7 @@ def test_plan_refuses_what_it_dropped_naming_it(
         ("put the apple in the fridge daily", "FloorPlan5"),
         ("put the apple in the fridge, every day", "FloorPlan5"),
         ("put a slice of egg in the microwave", "FloorPlan12"),
+        ("put a slice of mug in the sink", "FloorPlan5"),
         (
             "Take two mugs: put one in the sink, the other in the cabinet, and the third on the counter.",
             "FloorPlan5",
@@ -81,6 +83,11 @@ def test_a_ban_of_a_list_of_places_forbids_each_place() -> None:
     assert unparsed == [] and len(constraints) == 1
     assert "put(Egg,Microwave), put(Egg,SinkBasin)" in constraints[0], constraints
     assert read("put the egg in the fridge, not the microwave or the apple", "FloorPlan5") == "refused"
+    # with its own verb, the list after a place is of places too (a thing after it keeps its own place)
+    ban = "put the apple on the counter and never put the egg in the fridge or the microwave"
+    said = read(ban, "FloorPlan5")
+    assert said != "refused" and said[1] == [], said
+    assert "put(Egg,Fridge), put(Egg,Microwave)" in said[2][0], said
 
 
 @pytest.mark.data
