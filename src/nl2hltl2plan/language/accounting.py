@@ -586,7 +586,7 @@ def _verb(
 
 def _piece_of_whole(words: list[str], i: int) -> bool:
     """ "both pieces of soap": a piece of something no knife slices is the whole thing."""
-    if words[i + 1 : i + 2] != ["of"]:
+    if words[i + 1 : i + 2] != ["of"] or words[i] in ("slice", "slices"):  # "a slice of mug" is no whole
         return False
     named = find_mentions(" ".join(words[i + 2 : i + 6]))
     return bool(named) and not set(named[0].entry.types) & SLICEABLE

@@ -97,6 +97,22 @@ def _both_before_a_list(w: str, instruction: str, start: int, m: Mention) -> boo
     )
 
 
+def _cut_into(words: list[str], i: int, cats: frozenset[str], parse: ParseUsage) -> Unread | None:
+    """ "cut the bread into three slices (and put them ...)": how many slices a cut makes is no count a task
+    takes (AI2-THOR's knife makes its own), unless the slices taken add up to it (read at exit 0, h282)."""
+    n = count_value(cats, words[i])
+    if n is None or i == 0 or words[i - 1] not in ("into", "in") or i + 1 == len(words):
+        return None
+    if "verb_sliced" not in categories(words[i + 1]):
+        return None
+    took = [max(1, t.count) for t in parse.tasks if t.sliced]
+    if n in took or n == sum(took):
+        return None
+    took_said = " + ".join(map(str, took)) or "no"
+    why = f"the base tasks take {took_said} slices: a cut into {n} is no count a task keeps"
+    return Unread(" ".join(words[i - 1 : i + 2]), "count", why)
+
+
 def count_unread(
     instruction: str,
     toks: list[tuple[str, int, int]],
@@ -111,6 +127,8 @@ def count_unread(
     w, start, _ = toks[i]
     words = [t[0] for t in toks]
     m = _next_mention(mentions, words, i)
+    if m is None and (cut := _cut_into(words, i, cats, parse)):
+        return cut
     if m is None and w == "both" and (more := _both_of_more(words, i)):  # "both (of) the three cups"
         return Unread(f"both {more}", "count", "'both' of more than two: say how many")
     if m is None or re.search(r"[,.;:!?]", instruction[start : m.char_start]):

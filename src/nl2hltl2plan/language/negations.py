@@ -237,6 +237,9 @@ def _read_clause(
         contrast = _contrasted_place(text, toks, i, inside, mentions, grounder, look)
         if contrast is not None:  # "put the tomato in the fridge, not the microwave"
             return _negation(text, toks, i, end_tok, end_tok, "put", *contrast)
+        affs = [look(t) for m in inside for t in grounder.resolve(m.entry)] if look is not None else []
+        if any(a is not None and not a.pickupable for a in affs):
+            return None  # "not the microwave or the apple": places and things mixed, neither is read
     if verb in _DONE_TO_IT and not inside and j + 1 < cut and words[j + 1] in ("it", "them"):
         inside = []  # "put the apple in the fridge, don't heat it": the pronoun alone names the thing
     elif verb is None or not inside:
@@ -319,11 +322,13 @@ def _contrasted_place(
     grounder: Grounder,
     look: AffordanceLookup | None,
 ) -> tuple[list[str], list[str], AffordanceLookup | None] | None:
-    """ "..., not the microwave" after a placing: the thing must not go to that place, when every type the
-    words name is a place nothing carries (a microwave, never a bowl: "not the bowl" may be a thing)."""
-    if look is None or len(inside) != 1:
+    """ "..., not the microwave (or the sink)" after a placing: the thing must not go to those places, when
+    every type the words name is a place nothing carries (a microwave, never a bowl: "not the bowl" may be a
+    thing); a list of them ("not the microwave or the sink") was read as things put in the place before."""
+    words = [w for w, _, _ in toks]
+    if look is None or not inside or not _listed(words, inside):
         return None
-    types = grounder.resolve(inside[0].entry)
+    types = [t for m in inside for t in grounder.resolve(m.entry)]
     affs = [look(t) for t in types]
     if not types or any(a is None or a.pickupable or not a.receptacle for a in affs):
         return None
@@ -344,6 +349,7 @@ def _objects_and_places(
     a place after "from" / "off" only says where the thing is ("don't move the vase from the table")."""
     things: list[str] = []
     places: list[str] = []
+    last: Mention | None = None  # the mention before, where it was a place
     for m in inside:
         types = grounder.resolve(m.entry)
         if not types:
@@ -351,8 +357,12 @@ def _objects_and_places(
         before = words[max(0, m.start - 3) : m.start]
         if things and {"from", "off"} & set(before):
             continue
-        is_place = any(w in PREPS for w in before) and things
+        # "never put the egg in the fridge or the microwave": a place listed after a place is one too
+        listed = last is not None and set(words[last.end : _determined(words, m.start)]) <= {"or", "nor", ","}
+        listed = listed and not PREPS & set(words[m.end : m.end + 2])  # "or the apple in the sink": a thing
+        is_place = (any(w in PREPS for w in before) or listed) and things
         (places if is_place else things).extend(types)
+        last = m if is_place else None
     return (things or None), places
 
 

@@ -110,9 +110,25 @@ def unordered_steps(
     free = frees_an_order(toks, in_mention, per_group_only)
     if len(parse.tasks) >= 2 and remarks and _totally_ordered(parse):
         return [Unread(remarks[0].words, "order", "it leaves an order free, but every base task is ordered")]
+    if len(parse.tasks) == 1 and (late := _closing_delay(plain)):
+        why = "one base task, nothing said before it: a later time no plan made now keeps; say what to do now"
+        return [Unread(late, "time", why)]
     if not words or len(parse.tasks) < 2 or parse.before or free:
         return []
     return [Unread(", ".join(dict.fromkeys(words)), "order", "the base tasks are not ordered")]
+
+
+_AFTER_DELAY = frozenset({"on", "please", "thanks", "thank", "you", "ok", "okay"})
+
+
+def _closing_delay(words: list[str]) -> str | None:
+    """The `delay` word ("later", "afterwards") that closes the request, only courtesy after it ("put the
+    remote on the sofa later, please"); inside, it orders a task's own steps ("chill it and later put
+    ...")."""
+    late = [i for i, w in enumerate(words) if "delay" in categories(w)]
+    if not late or words[late[-1] - 1] == "for":  # "leave the bread out for later": kept for a later use
+        return None
+    return words[late[-1]] if set(words[late[-1] + 1 :]) <= _AFTER_DELAY else None
 
 
 def frees_an_order(

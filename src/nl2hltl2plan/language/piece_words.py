@@ -74,11 +74,27 @@ def slices_said(text: str) -> str:
 
 
 def unsure_pieces(lowered: str) -> list[Unread]:
-    """Check 1's refusals of a part that may be no slice ("a leaf of lettuce"), said of a sliceable thing."""
+    """Check 1's refusals of a part that may be no slice ("a leaf of lettuce"), said of a sliceable thing,
+    and of a slice of a thing no knife cuts into slices ("a slice of egg": read as a cracked egg at exit
+    0)."""
     _, _, unsure = _patterns()
     out = []
     for m in unsure.finditer(lowered):
         end = _cut(lowered, m.end(), bread_only=False)
         if end is not None:
             out.append(Unread(lowered[m.start() : end], "count", UNSURE_PIECE))
+    for x in find_mentions(lowered):
+        if set(x.entry.types) <= SLICEABLE - _CUT and (
+            _SLICE_BEFORE.search(lowered[max(0, x.char_start - 24) : x.char_start])
+            or _SLICE_AFTER.match(lowered, x.char_end)
+        ):
+            out.append(Unread(x.surface, "object", NO_SLICES))
     return out
+
+
+NO_SLICES = "no knife cuts it into slices (an egg is cracked): no base task takes a slice of it"
+_SLICE_WORD = r"(?:slices?|pieces?|wedges?|chunks?|bits?)"
+_SLICE_BEFORE = re.compile(
+    rf"\b(?:{_SLICE_WORD}\s+of|slice|cut|chop)(?:\s+up)?\s+(?:the\s+|an?\s+|that\s+)?$"
+)
+_SLICE_AFTER = re.compile(rf"\s+{_SLICE_WORD}\b")

@@ -135,8 +135,9 @@ def later_days_unread(text: str) -> list[Unread]:
     """Each later day set off at the end of a request ("..., tomorrow", "..., on Friday"; h273), read
     before the frame rule reads it off (`times_dropped`)."""
     why = "no base task waits for a later day: a plan made now cannot be done then; say 'by' for a deadline"
+    wait = "no base task waits for a time: a plan made now is done now; say what to do now"
     days = (closing_later_day(s) for s in re.split(r"(?<=[.!?;])\s+", text.strip()))
-    return [Unread(day, "time", why) for day in days if day]
+    return [Unread(day, "time", wait if day.lower().startswith("in ") else why) for day in days if day]
 
 
 # --- the time words that only say when a whole request is for (h244's frame times) ---
@@ -156,10 +157,12 @@ def _time() -> re.Pattern[str]:
 @lru_cache(maxsize=1)
 def _closing_later() -> re.Pattern[str]:
     """A later day (no deadline's "for" or "by") set off at the end of a sentence: "..., tomorrow.",
-    "..., on Friday", "- tonight!", "..., next week, please."."""
+    "..., on Friday", "- tonight!", "..., next week, please."; or a short wait closing it ("... in a
+    bit.")."""
     w = {kind: _any(ws) for kind, ws in _words().items()}
     later = rf"(?:(?:on|this|next)\s+)?(?:{w['when']})s?(?:\s+(?:{w['part']}))?|next\s+(?:{w['part']})"
-    closing = rf"(?:,|\s[-–—]+)\s*(?P<day>{later})(?:\s*,?\s*please)?\s*[.!?;]*\s*$"
+    closing = rf"(?:(?:,|\s[-–—]+)\s*(?P<day>{later})|\s*,?\s+(?P<wait>{w['delay']}))"
+    closing += r"(?:\s*,?\s*please)?\s*[.!?;]*\s*$"
     return re.compile(closing, re.IGNORECASE)
 
 
@@ -170,7 +173,7 @@ def closing_later_day(sentence: str) -> str | None:
     # (after a heading that asks nothing, "Chore chart, Saturday.", the day is the note's: frame)
     said = re.findall(r"[a-z]+", sentence[: m.start()].lower()) if m else []
     asked = any(c.startswith("verb_") for w in said for c in categories(w))
-    return m["day"] if m and asked else None
+    return (m["day"] or m["wait"]) if m and asked else None
 
 
 def _untimed(fragment: str) -> str:

@@ -25,6 +25,7 @@ from nl2hltl2plan.language.grammar.frames import UNDER
 from nl2hltl2plan.language.grammar.put_back import WHERE_IT_WAS
 from nl2hltl2plan.language.grammar.repeats import REPEAT_FRAGMENT
 from nl2hltl2plan.language.grounding import Mention, lookup, sentence_start, tokens
+from nl2hltl2plan.language.landmarks import NEAR_WORDS
 from nl2hltl2plan.language.mention_use import task_spans
 from nl2hltl2plan.language.negations import NO_CONSTRAINT, PRONOUNS
 from nl2hltl2plan.language.parse_usage import ParseUsage
@@ -142,10 +143,16 @@ def under_a_place(instruction: str, mentions: list[Mention], parse: ParseUsage) 
         below = [m for m in named if _UNDER_BEFORE.search(lowered[max(0, m.char_start - 30) : m.char_start])]
         if named and len(below) == len(named):
             out.append(Unread(below[0].surface, "place", _UNDER))
-    return out
+    # "on the sofa or under it": the other place of a choice said only next to the first names no place
+    return out + [Unread(m[1], "place", _BESIDE_IT) for m in _OR_BESIDE_IT.finditer(lowered)]
 
 
 _UNDER = "no base task puts a thing under another: say in or on"
+_BESIDE_IT = "a place said only as under, behind or next to another is no place a base task puts a thing"
+_OR_BESIDE_IT = re.compile(
+    r"\bor\s+(?:(?:put|leave|set|place|stick)\s+it\s+)?(?:just\s+)?"
+    rf"((?:{'|'.join(sorted(UNDER | NEAR_WORDS))}|(?:next|close)\s+to|in\s+front\s+of)\s+(?:it|them)\b)"
+)
 _UNDER_BEFORE = re.compile(rf"\b(?:{'|'.join(sorted(UNDER))})\s+(?:the\s+|a\s+|an\s+|your\s+|my\s+)?$")
 
 

@@ -58,6 +58,7 @@ _OTHER = re.compile(
     r"(?=\s+(?:in|into|on|onto|inside|to|under|back|and|goes|go|can|should)\b|\s*[,;.!]|$)",
     re.I,
 )
+_MORE_THAN_TWO = re.compile(r"\b(?:third|fourth|fifth|rest|remaining|others)\b", re.I)
 _GOES = re.compile(
     r"^\s*(?:goes|go|can\s+go|should\s+go)?\s*(?=(?:back\s+)?(?:in|into|on|onto|inside|to|under)\b)"
 )
@@ -127,6 +128,8 @@ def _apart(text: str, m: re.Match[str]) -> str | None:
     if len(ones) != 1 or re.search(r"\b(?:one|other)\b", text[other.end() : _end(text, other.end())], re.I):
         return None
     one, end = ones[0], _end(text, other.end())
+    if _MORE_THAN_TWO.search(text, start, end):
+        return None  # "two mugs: one in the sink, the other in the cabinet, the third ...": not a pair
     # the later reference first: the earlier one's words after it ("goes in ...") are read from its result
     rest = _said(text[one.end() : other.start()], text[other.end() : end], "another", noun, treat)
     said = None if rest is None else _said(text[start : one.start()], rest, "a", noun, treat)
