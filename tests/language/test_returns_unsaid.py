@@ -27,7 +27,7 @@ MUG_IN_SINK = [place("Mug", "SinkBasin")]
     "text, unread",
     [
         ("put the mug in the sink and then return it", ["return it"]),
-        ("put the mug in the sink, then return them later", ["return them"]),
+        ("put the mug in the sink, then return them later", ["return them", "later"]),  # "later": h282
         ("put the mug in the sink, then put it back where it was", ["back where it was"]),
         ("put the mug in the sink and put it back where it came from", ["back where it came from"]),
         ("put the mug in the sink, then put it back in its usual place", ["back in its usual place"]),

@@ -5,7 +5,7 @@
   (`unknown_words.foreign_sentences`); only the frame rule drops a sentence, and it lists what it drops.
 - A refusal for a thing the world lacks names the words and the sentence it came from ("Check your
   mirrors and off you go"), where the word is not the type's own name or the text says more than one
-  sentence (`missing_types.named_where`).
+  sentence (`missing_where.named_where`).
 - A handover refusal quotes the user's words: "as follows" and an imperative "Follow me" are not
   rewritten to "comes after", and a word no rewrite of the user's own made is never named."""
 

@@ -6,12 +6,10 @@ by `type_choice.note_for`; it imports no language module, so that the grounding 
 
 from __future__ import annotations
 
-import re
 from collections.abc import Collection, Sequence
 from functools import cache
 from typing import TYPE_CHECKING
 
-from nl2hltl2plan.domain.task_kinds import camel_words
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
 
 if TYPE_CHECKING:
@@ -84,31 +82,3 @@ def _unlike_a_seat(type_: str, look: AffordanceLookup) -> tuple[bool, bool]:
 def _receptacle_types(look: AffordanceLookup, entry: Entry) -> set[str]:
     """The entry's types that ALFRED lets hold things (a word for a place, not for a thing)."""
     return {t for t in entry.types if (a := look(t)) is not None and a.receptacle}
-
-
-_NO_TYPE = re.compile(r"^no ([A-Z][A-Za-z]+)(?= in )")
-_SENTENCE_BREAK = re.compile(r"[.;!?]")
-
-
-def named_where(refused: Exception, instruction: str) -> Exception:
-    """A refusal for a type the world lacks ("no Mirror in tabletop", issue 23) with the words it came
-    from, where the word differs from the type's name or the instruction says more than one sentence:
-    "no Mirror (for 'mirrors' in 'Check your mirrors and off you go') in tabletop". A user who never
-    asked for a mirror sees which of their sentences was read as one."""
-    from nl2hltl2plan.language.grounding import find_mentions, sentence_start
-
-    said = str(refused)
-    m = _NO_TYPE.match(said)
-    if m is None:
-        return refused
-    for x in find_mentions(instruction):
-        if x.entry.canonical != m[1] and m[1] not in x.entry.types:
-            continue
-        start = sentence_start(instruction, x.char_start)
-        after = _SENTENCE_BREAK.search(instruction, x.char_end)
-        sentence = " ".join(instruction[start : after.start() if after else None].split())
-        alone = sentence == " ".join(instruction.split()).rstrip(".!?")
-        if alone and (x.surface.lower() == camel_words(m[1]) or repr(x.surface) in said):
-            return refused  # "put the statue in the fridge": one sentence, its word named as said
-        return type(refused)(f"no {m[1]} (for {x.surface!r} in {sentence!r}){said[m.end() :]}")
-    return refused

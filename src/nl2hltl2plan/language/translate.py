@@ -39,7 +39,7 @@ from nl2hltl2plan.language.htt_build import build_htt
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.llm_reading import cross_check, llm_leaf_actions, read_with_llm
 from nl2hltl2plan.language.ltl_generation import llm_generate_ltl, translator_client
-from nl2hltl2plan.language.missing_types import named_where
+from nl2hltl2plan.language.missing_where import named_where
 from nl2hltl2plan.language.negations import (
     Negation,
     nothing_to_do,
