@@ -29,7 +29,8 @@ from nl2hltl2plan.pipeline import PipelineOptions, run
 from nl2hltl2plan.worlds import load_world
 from nl2hltl2plan.worlds.floor_plans import listed_types
 
-_NO_OBJECT = re.compile(r"\bno (\w+) in (FloorPlan\d+)")
+# "no Statue in FloorPlan17", or with the words it came from: "no Statue (for 'statue' in '...') in FloorPlan17"
+_NO_OBJECT = re.compile(r"\bno (\w+)(?: \(for .*?\))? in (FloorPlan\d+)")
 
 
 def instructions(n_base: int) -> list[tuple[str, str, list[list[float]]]]:

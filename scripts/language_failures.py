@@ -83,7 +83,7 @@ WORLD = CLASSES[-2]
 NOTHING_READ = "the offline parser understood no task in "  # `translate._parse`'s refusal
 # a refusal of the floor plan's: an object it lacks ("no Statue in FloorPlan17"), too few of one
 # ("'two pillows': FloorPlan301 holds only 1 pillow")
-LACKING = re.compile(r"^no \w+ in FloorPlan|: FloorPlan\d+ holds only ")
+LACKING = re.compile(r"^no \w+(?: \(for .*?\))? in FloorPlan|: FloorPlan\d+ holds only ")
 
 
 def rows(name: str, n: int) -> list[dict[str, Any]]:
@@ -228,7 +228,7 @@ def long_reason(text: str, world: World) -> list[str]:
         r = shipped(text, world)
     except Nl2Hltl2PlanError as exc:
         msg = str(exc)
-        if re.match(r"no \w+ in FloorPlan", msg):
+        if re.match(r"no \w+(?: \(for .*?\))? in FloorPlan", msg):
             return ["world: names an object the world lacks"]
         if "cannot be done" in msg:
             return ["world: a task the world cannot do"]
