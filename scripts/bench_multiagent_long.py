@@ -29,7 +29,7 @@ from nl2hltl2plan.pipeline import PipelineOptions, run
 from nl2hltl2plan.worlds import load_world
 from nl2hltl2plan.worlds.floor_plans import listed_types
 
-# "no Statue in FloorPlan17", or with the words it came from: "no Statue (for 'statue' in '...') in FloorPlan17"
+# "no Statue in FloorPlan17", or with the words it came from: "no Statue (for 'statue' in '...') in ..."
 _NO_OBJECT = re.compile(r"\bno (\w+)(?: \(for .*?\))? in (FloorPlan\d+)")
 
 
