@@ -6,26 +6,12 @@ measured by `scripts/trust_sets.py measure --sets paper_h279dev`."""
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import pytest
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.language.translate import translate
 
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
-
-EGG, MUG = "place Egg -> Fridge", "place Mug -> SinkBasin"
-REQUEST = "Put the egg in the fridge, then put the mug in the sink."
-
-
-def read(text: str) -> tuple[list[str], list[tuple[str, str]], list[str], list[str]]:
-    """(the tasks' summaries, the order, what is left unread, the assumptions)."""
-    from trust_sets import world_of
-
-    res = translate(text, world_of("FloorPlan28"), build=False, actions="none")
-    return [t.summary() for t in res.tasks], sorted(res.before), res.unparsed, res.assumptions
+# the same request and reader as h244's frame tests, whose rule this one extends
+from tests.language.test_household_frames_h244 import EGG, MUG, REQUEST, read
 
 
 @pytest.mark.data
