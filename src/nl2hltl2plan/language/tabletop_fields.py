@@ -39,7 +39,7 @@ from nl2hltl2plan.language.content_words import free_order_phrase, phrase_catego
 from nl2hltl2plan.language.headings import counted_headings, heading_pattern, heading_words
 from nl2hltl2plan.language.spelling import english_lemmas
 from nl2hltl2plan.language.tabletop_steps import label_remarks_read
-from nl2hltl2plan.language.tabletop_wording import mention_pattern
+from nl2hltl2plan.language.tabletop_wording import kind_pattern, mention_pattern
 
 _WHAT = heading_words()["record_thing"]
 _WHERE = heading_words()["record_place"]
@@ -135,8 +135,8 @@ def _list_labels_dropped(text: str, kinds: dict[str, bool], dropped: list[str] |
     """`text` without the labels that announce the list of placements after their colon (see the module
     docstring): each part of the list is one thing, at most two words that name nothing, "in" / "on" /
     "to" and one plate ("green apple posted to the blue plate", "put the carrot in the blue plate")."""
-    things = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
-    plates = mention_pattern([n for n, plate in kinds.items() if plate]).pattern
+    things = kind_pattern(kinds, plates=False).pattern
+    plates = kind_pattern(kinds, plates=True).pattern
     item = re.compile(
         rf"(?:(?:put|place|move|drop|set|transfer|deliver)\s+)?(?:the\s+|one\s+|an?\s+)?{things}"
         rf"(?P<between>(?:\s+[a-z']+){{0,2}}?)\s+(?:in|on|into|onto|to)\s+(?:the\s+)?{plates}",

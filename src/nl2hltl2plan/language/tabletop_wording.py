@@ -220,8 +220,8 @@ def assigned_read(text: str, kinds: dict[str, bool]) -> str:
     """
     if all(kinds.values()) or not any(kinds.values()):
         return text
-    things = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
-    plates = mention_pattern([n for n, plate in kinds.items() if plate]).pattern
+    things = kind_pattern(kinds, plates=False).pattern
+    plates = kind_pattern(kinds, plates=True).pattern
     sent = re.compile(
         rf"(?P<thing>{things})\s+(?:(?:is|are|gets|get|was|were|being)\s+)?(?P<verb>[a-z]+(?:ed|en|ing))\s+"
         rf"(?P<to>into|onto|to)\s+(?=(?:the\s+)?{plates})",
@@ -313,7 +313,7 @@ def _own_plate_dropped(text: str, kinds: dict[str, bool]) -> str:
 def _tidied_as_put(text: str, kinds: dict[str, bool]) -> str:
     """ "sort the green apple onto the blue plate": a verb of tidying before a named object is the one
     action of this world, placing it."""
-    objects = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
+    objects = kind_pattern(kinds, plates=False).pattern
     return re.sub(rf"\b{TIDY_VERB}(?:\s+(?:out|up))?(?=\s+(?:the\s+)?{objects})", "put", text)
 
 
@@ -329,7 +329,7 @@ def respectively_paired(text: str, kinds: dict[str, bool]) -> str:
     """ "the carrot and the orange go on the blue and yellow plates respectively" -> "put the carrot on
     the blue plate, the orange on the yellow plate": the n-th object with the n-th plate, where the
     clause names as many objects as plates (by colour or in full) and nothing else but placing words."""
-    objects = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
+    objects = kind_pattern(kinds, plates=False).pattern
     colours = {n.split()[0]: n for n, plate in kinds.items() if plate and len(n.split()) == 2}
     plate = rf"\b(?:{'|'.join(map(re.escape, colours))})(?:\s+plate)?\b"
 
@@ -376,7 +376,7 @@ def _moving_on_read(text: str, kinds: dict[str, bool]) -> str:
     plate named last before it (the
     step just said), then the next plate ("move on to the blue plate and fill it with ..." -> "fill the
     blue plate with ..."); left where the plate done with is not the one named last."""
-    plates = mention_pattern([n for n, plate in kinds.items() if plate])
+    plates = kind_pattern(kinds, plates=True)
 
     def done(m: re.Match[str]) -> str:
         before = [_name(p) for p in plates.findall(text, 0, m.start()) if _name(p) in kinds]
@@ -395,7 +395,7 @@ def _plate_referred(text: str, kinds: dict[str, bool]) -> str:
     """ "on it" / "on that plate" / "on the same plate" as the plate named last before it (in this world
     only a plate holds things: "the yellow plate comes first: the green apple and the orange go on it");
     left where no plate is named before it."""
-    plates = mention_pattern([n for n, plate in kinds.items() if plate])
+    plates = kind_pattern(kinds, plates=True)
 
     def referred(m: re.Match[str]) -> str:
         before = [_name(p) for p in plates.findall(text, 0, m.start()) if _name(p) in kinds]
@@ -425,7 +425,7 @@ def plates_by_colour(text: str, kinds: dict[str, bool]) -> str:
         rf"\b(?P<at>(?:on|onto|upon|in|into|to)\s+)the\s+(?P<c>{'|'.join(map(re.escape, colours))})\s+one\b"
     )
     text = after_place.sub(lambda m: f"{m['at']}the {colours[m['c']]}", text)
-    objects = mention_pattern([n for n, plate in kinds.items() if not plate]).pattern
+    objects = kind_pattern(kinds, plates=False).pattern
     # "on the green and the red apple on the pink": after a word of place, a colour is where something
     # goes, a plate, even before "and" when an object follows ("the green and red apples" elsewhere)
     placed = re.compile(
@@ -483,6 +483,11 @@ def mention_pattern(names: Iterable[str], flags: int = 0) -> re.Pattern[str]:
     ordered = sorted(names, key=len, reverse=True)
     alternatives = "|".join(r"\s+".join(map(re.escape, n.split())) + "s?" for n in ordered)
     return re.compile(rf"\b(?:{alternatives})\b", flags)
+
+
+def kind_pattern(kinds: dict[str, bool], plates: bool) -> re.Pattern[str]:
+    """`mention_pattern` of the plates (`plates`) or of the other things of `kinds` (name -> a plate?)."""
+    return mention_pattern([n for n, plate in kinds.items() if plate == plates])
 
 
 def corrected(text: str, kinds: dict[str, bool]) -> str:
