@@ -3194,3 +3194,62 @@ HELD_H280: dict[str, dict[int, list[str]]] = {
             "dropped, the carrot and the red apple to the blue plate, in either order."],
     },
 }
+
+
+# h286's held-out batch (session 34, issues 28 and 24): four rephrasings of each of the paper's four tabletop
+# tasks, one per voice (a plumber, a cricket captain, an archivist, a sheriff), voices no batch above uses;
+# written without reading the reader's code or trying any line, committed before any scoring and scored once,
+# unchanged (results/experiments/h286.md). The expected reading of each line is its task's ground truth
+# (suites/tabletop/tabletop_tasks.json), as listed above HELD_H210.
+HELD_H286: dict[str, dict[int, list[str]]] = {
+    "plumber": {
+        1: ["Right, I've had a look and it's a simple job. The green apple goes in the blue plate and the "
+            "orange goes in the yellow plate. Shouldn't take more than ten minutes."],
+        2: ["Three fittings to sort today: the green apple into the pink plate, the orange into the yellow "
+            "plate and the red apple into the blue plate. Which one you fit first makes no odds to me."],
+        3: ["Full refit on this one, mate. The carrot in the blue plate, the orange in the yellow plate, "
+            "the green apple in the green plate and the red apple in the pink plate. Tackle them in any "
+            "order, it all drains the same in the end."],
+        4: ["Same as any bathroom: pipes before tiles. So first the green apple and the orange go in the "
+            "yellow plate, either one first. Once those two are both in, the carrot and the red apple go "
+            "in the blue plate, in whatever order."],
+    },
+    "cricket_captain": {
+        1: ["Right lads, field's set. Green apple goes to the blue plate, orange goes to the yellow plate. "
+            "Let's get them all out before tea."],
+        2: ["Three fielders to put in position: the green apple in the pink plate, the orange in the "
+            "yellow plate, the red apple in the blue plate. The batting order doesn't matter here, take "
+            "them as you like."],
+        3: ["Four overs left, everyone. Carrot onto the blue plate, orange onto the yellow plate, green "
+            "apple onto the green plate, red apple onto the pink plate. No set order, the captain's happy "
+            "either way."],
+        4: ["Two innings today. First innings: the orange and the green apple into the yellow plate, "
+            "whichever goes first. The second innings doesn't start till both of them are in: then the "
+            "carrot and the red apple into the blue plate, in either order. Well played."],
+    },
+    "archivist": {
+        1: ["For the catalogue, please: the green apple is to be filed in the blue plate and the orange in "
+            "the yellow plate. Kindly keep your voice down in the reading room."],
+        2: ["Three items to shelve: the green apple in the pink plate, the orange in the yellow plate, the "
+            "red apple in the blue plate. They may be shelved in any sequence; nothing here is indexed by "
+            "order."],
+        3: ["A new accession of four items. The carrot belongs in the blue plate, the orange in the yellow "
+            "plate, the green apple in the green plate and the red apple in the pink plate. The order of "
+            "filing is of no consequence."],
+        4: ["This collection is processed in two batches. Batch one: the orange and the green apple are to "
+            "go into the yellow plate, in either order. Batch two, which waits until batch one is "
+            "complete: the carrot and the red apple go into the blue plate, again in either order."],
+    },
+    "sheriff": {
+        1: ["Listen up, partner. That green apple's headed for the blue plate, and the orange for the "
+            "yellow plate. Now git."],
+        2: ["Three outlaws to round up: green apple into the pink plate, orange into the yellow plate, red "
+            "apple into the blue plate. Don't matter none which you catch first."],
+        3: ["This here town's got four jobs for you, deputy. Carrot on the blue plate, orange on the "
+            "yellow plate, green apple on the green plate and red apple on the pink plate, any which way "
+            "you like."],
+        4: ["Here's how we play it, deputy. The green apple and the orange get put in the yellow plate "
+            "first, whichever you reckon. Nobody touches the carrot or the red apple till those two are "
+            "in; then the carrot and the red apple go in the blue plate, any order you like."],
+    },
+}
