@@ -55,6 +55,10 @@ READ = [
      [EGG, MUG], set()),
     # records, the receptacle on either side; a closing "Any order." after sentences that order nothing
     ("Fridge: egg. Apple: fridge.", [APPLE, EGG], set()),
+    # a place's need as a request (h291): two clauses, a list, and an order word after it
+    ("the sink needs a mug and the fridge needs an egg", [EGG, MUG], set()),
+    ("the fridge needs an egg and an apple, then the sink could use a mug.",
+     [APPLE, EGG, MUG], {(EGG, MUG), (APPLE, MUG)}),
     ("Put the egg in the fridge. Put the apple in the fridge. Put the mug in the sink. Any order.",
      [APPLE, EGG, MUG], set()),
 ]
@@ -85,6 +89,9 @@ NEAR_MISSES = [
     "Mug: sink.",
     # "Any order." after a sentence that orders another: which order is meant is not said
     "Put the egg in the fridge. Then put the apple in the fridge. Put the mug in the sink. Any order.",
+    # a need that is no placement: "a scrub" names no thing; the mug is "moved off", not put there
+    "the sink needs a scrub and the fridge needs an egg",
+    "the sink needs the mug moved out of it, put the egg in the fridge",
     # a heading's count that is not the number of things listed (was read as two eggs: the lead, session 22)
     "Put two things away: the egg in the fridge, the mug in the sink and the apple on the table.",
 ]
@@ -106,6 +113,10 @@ def test_rewrites_leave_other_text_alone():
     for text in left:
         assert restated(text) == text
     assert restated("The fridge gets the egg.") == "put the egg on the fridge."
+    # a need: only of a receptacle, and only of things named to the end of each listed phrase
+    for text in ("the apple needs a mug", "the sink needs a scrub", "the sink needs the mug moved off it"):
+        assert restated(text) == text
+    assert restated("ok the sink needs a mug, thx") == "ok put a mug on the sink, thx"
 
 
 # Issue 28 (h61): reference and free-order phrasings of unseen instructions (refsheld dev seeds)

@@ -12,6 +12,10 @@ lexicon names (`find_mentions`), so a sentence about anything else is left as it
   put on the topic; the order word stays ("start with" is "first");
 - the place as subject: "(the) yellow plate (has to) get(s) the green apple" is "put the green apple on
   the yellow plate", and in the same sentence ", the blue plate the red apple" is one more;
+- a place's need: "the bin needs X, Y and Z" (or "could use") is "put X, Y and Z on the bin", and "the
+  sink needs X and the fridge needs Y" two such clauses, when the place is a receptacle and each listed
+  thing ends in a name the lexicon knows ("the sink needs a scrub" and "the table needs the mug moved off
+  it" stay as said: h291);
 - "load / fill / stock the yellow plate with X and Y" is "put X and Y on the yellow plate";
 - a record "Blue plate: carrot." (or "Carrot: blue plate.") is "put the carrot on the blue plate" when
   exactly one side is a receptacle;
@@ -57,6 +61,17 @@ _SUBJECT_PLACE = re.compile(
     rf"{_GETS}|$)",
     re.I,
 )
+_NEEDS = r"(?:needs|could\s+use)"
+_PLACE_NEEDS = re.compile(
+    r"(?:^|(?<=[.;:!?,])|(?<=\band)|(?<=\bthen)|(?<=\bso)|(?<=\bok)|(?<=\balso))(?P<sp>\s*)"
+    rf"(?P<place>the\s+[a-z]+(?:\s+[a-z]+)?)\s+{_NEEDS}\s+"
+    r"(?P<objs>(?:the|a|an|one|two|three|four|\d+)\s+[^.;:!?]+?)"
+    r"(?=\s*[.;:!?]|\s*,\s*(?:and\s+)?(?:then\s+)?the\s+[a-z]+(?:\s+[a-z]+)?\s+"
+    rf"{_NEEDS}\b|\s+and\s+(?:then\s+)?the\s+[a-z]+(?:\s+[a-z]+)?\s+{_NEEDS}\b|"
+    r"\s*,?\s+(?:and\s+)?(?:then|before|after|once|when|too|as\s+well|first|last)\b|\s*,\s*(?:thx|thanks|pls|please)\b|$)",
+    re.I,
+)
+_LIST_SPLIT = re.compile(r"\s*,\s*(?:and\s+)?|\s+and\s+", re.I)
 # ", the blue plate the red apple" after a place-as-subject clause: two noun phrases side by side
 _PLACE_OBJECT_PAIR = re.compile(
     rf"(?P<join>,\s*(?:and\s+)?|\s+and\s+)(?P<place>{_NP})\s+(?P<obj>{_NP})(?=\s*[,.;!?]|\s+and\s|$)", re.I
@@ -151,6 +166,7 @@ def restated(text: str) -> str:
     text = _COUNTED_HEADER.sub(lambda m: _without_header(text, m), text)
     text = _TOPIC_HEADER.sub(_topic_clause, text)
     text = _subject_places(text)
+    text = _PLACE_NEEDS.sub(_needs_put, text)
     text = _FRONTED_PLACE.sub(_fronted, text)
     text = _LOAD_WITH.sub(_loaded, text)
     text = _RECORD.sub(_record_put, text)
@@ -255,6 +271,19 @@ def _subject_places(text: str) -> str:
         out.append(_PLACE_OBJECT_PAIR.sub(_pair_put, text[m.end() : end]))
         pos = end
     return "".join(out) + text[pos:]
+
+
+def _needs_put(m: re.Match[str]) -> str:
+    """ "the bin needs X and Y" -> "put X and Y on the bin" when the bin is a receptacle and each listed
+    thing ends in a name ("a chilled lettuce", "two glass bottles"); else as said."""
+    place = find_mentions(m["place"])
+    if not (_is_named(m["place"], whole=True) and set(place[0].entry.types) & RECEPTACLES):
+        return m[0]
+    for item in _LIST_SPLIT.split(m["objs"].strip()):
+        found = find_mentions(item)
+        if not found or found[-1].char_end != len(item) or found[-1].entry.generic:
+            return m[0]
+    return f"{m['sp']}put {m['objs']} on {_lower_article(m['place'])}"
 
 
 def _pair_put(p: re.Match[str]) -> str:
