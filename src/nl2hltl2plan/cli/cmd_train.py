@@ -40,8 +40,11 @@ def register(sub: Any) -> None:
     lang.add_argument("--structure-out", type=Path, default=None,
                       help="where to write the structure model (default: "
                       "~/.cache/nl2hltl2plan/models/structure_model.npz, preferred likewise)")
-    lang.add_argument("--only", choices=["slots", "structure"], default=None,
-                      help="train only one of the two models")
+    lang.add_argument("--request-out", type=Path, default=None,
+                      help="where to write the request-unit classifier (default: "
+                      "~/.cache/nl2hltl2plan/models/request_model.npz, preferred likewise)")
+    lang.add_argument("--only", choices=["slots", "structure", "request"], default=None,
+                      help="train only one of the three models")
     lang.add_argument("--seed", type=seed, default=0, help="random seed, 0..2^32-1 (default 0)")
     lang.add_argument("--encoder", action="store_true",
                       help="the slot model (not the structure model) also reads the pretrained "
@@ -52,8 +55,8 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from nl2hltl2plan.io import check_output_file
-    from nl2hltl2plan.language.learned import structure_train
-    from nl2hltl2plan.language.learned.slot_model import user_model_path
+    from nl2hltl2plan.language.learned import request_units, structure_train
+    from nl2hltl2plan.language.learned.slot_model import user_model_path, user_path
     from nl2hltl2plan.language.learned.structure import user_structure_path
     from nl2hltl2plan.language.learned.train import train_and_report
 
@@ -62,6 +65,8 @@ def run(args: argparse.Namespace) -> int:
         ("structure", args.structure_out or user_structure_path(), structure_train.train_and_report),
         ("slots", args.out or user_model_path(), partial(train_and_report, encoder=True) if args.encoder
          else train_and_report),
+        # the request-unit classifier (a voice's frame against its request; measured and off: h287)
+        ("request", args.request_out or user_path(request_units.ARTIFACT), request_units.train_and_report),
     ]
     for name, path, job in jobs:
         if args.only not in (None, name):

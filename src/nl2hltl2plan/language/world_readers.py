@@ -49,6 +49,7 @@ from nl2hltl2plan.language.headings import heading_dropped, heading_note, note_c
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_name_notes, descriptive_names
 from nl2hltl2plan.language.landmarks import put_away_unread
+from nl2hltl2plan.language.learned.request_units import frames_classified
 from nl2hltl2plan.language.negation_forms import instead_said, untreated_said
 from nl2hltl2plan.language.negations import exclusions_unread, unmoved_said
 from nl2hltl2plan.language.numbered_steps import step_order
@@ -176,6 +177,8 @@ class _HouseholdReader(SharedGrammar):
         self.frames = []
         self.later_days = later_days_unread(text)
         text = frames_dropped(text, _thing_words(text), self.frames, times=True)
+        # the units a learned classifier is sure are a voice's frame (off unless set: h287)
+        text = frames_classified(text, _thing_words(text), self.frames)
         self.deadlines = []
         text = deadlines_dropped(text, _thing_words(text), self.deadlines, self.frames)
         # a heading whose name is a thing's ("Prep card:", "Lamp game:"): the frame rule keeps thing words
