@@ -49,6 +49,7 @@ _BREAK = re.compile(r"\n+|(?<=[A-Za-z0-9)\]][.!?])\s+")
 _LABEL = re.compile(r"^(.{1,40}?):\s+(?=\S)")  # a label before a colon, "Note 3: ...", "[10:20] Sam: ..."
 _WORD = re.compile(r"[a-z0-9']+")
 _ORDER_CATS = ("order", "any_order", "delay", "condition")
+_SIZES = ((1, "1"), (2, "2"), (3, "3"), (6, "4-6"), (12, "7-12"), (10**9, "13+"))  # a unit's words
 
 
 def units(text: str) -> list[tuple[int, int]]:
@@ -106,7 +107,7 @@ def content(unit: str) -> bool:
 def _shape(unit: str) -> list[str]:
     words = _WORD.findall(unit.lower())
     n = len(words)
-    size = "1" if n <= 1 else "2" if n == 2 else "3" if n == 3 else "4-6" if n <= 6 else "7-12" if n <= 12 else "13+"
+    size = next(name for top, name in _SIZES if n <= top)
     end = unit.rstrip()[-1:]
     out = [f"len={size}", f"end={end if end in '.!?:,' else 'w'}", *(f"k={k}" for k in sorted(_kinds(unit)))]
     out += ["digit"] * bool(re.search(r"\d", unit)) + ["clock"] * bool(re.search(r"\d:\d\d", unit))
@@ -121,11 +122,13 @@ def unit_features(text: str, ranges: list[tuple[int, int]]) -> list[list[str]]:
     out = []
     for i, (a, b) in enumerate(ranges):
         words = _WORD.findall(text[a:b].lower()) or ["_"]
-        where = "only" if len(ranges) == 1 else "first" if i == 0 else "last" if i == len(ranges) - 1 else "mid"
+        last = len(ranges) - 1
+        where = "only" if last == 0 else "first" if i == 0 else "last" if i == last else "mid"
         f = ["bias", f"pos={where}", f"w0={words[0]}", f"wn={words[-1]}", *shapes[i]]
         f += [f"{where}&{s}" for s in shapes[i] if s.startswith(("k=", "len=", "bare"))]
-        f += [f"prev:{s}" for s in shapes[i - 1] if s.startswith(("k=", "bare"))] if i else ["prev:none"]
-        f += [f"next:{s}" for s in shapes[i + 1] if s.startswith(("k=", "bare"))] if i + 1 < len(ranges) else ["next:none"]
+        for side, j in (("prev", i - 1), ("next", i + 1)):
+            near = shapes[j] if 0 <= j <= last else ["none"]
+            f += [f"{side}:{s}" for s in near if s.startswith(("k=", "bare", "none"))]
         out.append(f)
     return out
 
@@ -198,7 +201,7 @@ def _with_sentences(s: Synth, which: Pools, rng: random.Random) -> Synth:
                                     if not any(a < m.end() < b for a, b in s.spans)]
         at = rng.choice(gaps)
         said = frame_sentence(which, rng)
-        text = said + " " + s.text if at == 0 else s.text[:at].rstrip() + " " + said + " " + s.text[at:].lstrip()
+        text = f"{said} {s.text}" if at == 0 else f"{s.text[:at].rstrip()} {said} {s.text[at:].lstrip()}"
         shift = len(text) - len(s.text)
         s = replace(s, text=text, spans=[(a + shift, b + shift) if a >= at else (a, b) for a, b in s.spans])
     return s
@@ -239,7 +242,8 @@ def accuracy(model: RequestModel, data: list[tuple[str, list[bool]]]) -> dict[st
             caught += frame and p >= THRESHOLD
             lost += (not frame) and p >= THRESHOLD
     n = frames + requests
-    return {"units": n, "right": right / n, "frame_recall": caught / max(frames, 1), "request_dropped": lost / max(requests, 1)}
+    return {"units": n, "right": right / n, "frame_recall": caught / max(frames, 1),
+            "request_dropped": lost / max(requests, 1)}
 
 
 def train_and_report(out: Path, seed: int = 0) -> str:
@@ -251,10 +255,12 @@ def train_and_report(out: Path, seed: int = 0) -> str:
     model.data_sha = data_fingerprint(data)
     model.save(out)
     lines = [f"request units: {len(data)} messages in {time.monotonic() - t0:.0f} s (seed {seed}) -> {out}"]
-    for name, split, which in (("train pools, valid_unseen", "valid_unseen", "train"),
-                               ("held pools, valid_unseen", "valid_unseen", "held")):
-        acc = accuracy(model, messages(split, 400, which, seed + 7))
-        lines.append(f"{name}: " + ", ".join(f"{k} {v:.3f}" if k != "units" else f"{k} {v:.0f}" for k, v in acc.items()))
+    pool_sets: tuple[Pools, ...] = ("train", "held")
+    for which in pool_sets:
+        name = f"{which} pools, valid_unseen"
+        acc = accuracy(model, messages("valid_unseen", 400, which, seed + 7))
+        said = (f"{k} {v:.0f}" if k == "units" else f"{k} {v:.3f}" for k, v in acc.items())
+        lines.append(f"{name}: " + ", ".join(said))
     return "\n".join(lines)
 
 
@@ -277,14 +283,18 @@ def frames_classified(text: str, names: frozenset[str], dropped: list[str]) -> s
     if os.environ.get(ON_ENV) != "1" or len(ranges) < 2:
         return text
     probs = load_request_model().frame_probability(text, ranges)
-    kept, gone = [], []
+    kept: list[str] = []
+    gone: list[str] = []
+    # labels of several parts ("Leo: ... Mia: ..."): whose part each is, which an order may name
+    labels = sum(text[a:b].endswith(":") for a, b in ranges) > 1
     for (a, b), p in zip(ranges, probs, strict=True):
         unit = text[a:b]
         named = set(_WORD.findall(unit.lower())) & names
         # a name said again elsewhere is pointed at ("Tom: ... Ella: ... Tom before Ella."): kept
         rest = text[:a] + text[b:]
         again = any(re.search(rf"\b{w}\b", rest) for w in re.findall(r"\b[A-Z][a-z]+\b", unit))
-        (gone if p >= THRESHOLD and not content(unit) and not named and not again else kept).append(unit)
+        keep = content(unit) or named or again or labels and unit.endswith(":")
+        (gone if p >= THRESHOLD and not keep else kept).append(unit)
     if not kept or not gone:
         return text
     dropped.extend(u.strip(" ,.!?;:") for u in gone)
