@@ -1,6 +1,6 @@
 """The request-unit classifier (issue 28, h287; `learned/request_units.py`): a message's units (lines,
 sentences, labels) as REQUEST or FRAME, and the household reader dropping the units it is sure are FRAME
-and that name nothing check 1 asks about, only with NL2HLTL2PLAN_REQUEST_UNITS=1 (measured and off)."""
+and that name nothing check 1 asks about (on by default; NL2HLTL2PLAN_REQUEST_UNITS=0 turns it off)."""
 
 from __future__ import annotations
 
@@ -30,9 +30,11 @@ def test_the_model_tells_a_frame_sentence_from_a_request() -> None:
     assert p[0] >= ru.THRESHOLD and p[2] >= ru.THRESHOLD and p[1] < 0.5
 
 
-def test_off_by_default_the_text_is_unchanged(monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.delenv(ru.ON_ENV, raising=False)
+def test_set_off_the_text_is_unchanged(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv(ru.ON_ENV, "0")
     assert ru.frames_classified(VOICED, frozenset(), []) == VOICED
+    monkeypatch.delenv(ru.ON_ENV)  # the default (`ON`)
+    assert ru.frames_classified(VOICED, frozenset(), []) != VOICED
 
 
 @pytest.mark.parametrize(

@@ -177,13 +177,14 @@ class _HouseholdReader(SharedGrammar):
         self.frames = []
         self.later_days = later_days_unread(text)
         text = frames_dropped(text, _thing_words(text), self.frames, times=True)
-        # the units a learned classifier is sure are a voice's frame (off unless set: h287)
-        text = frames_classified(text, _thing_words(text), self.frames)
         self.deadlines = []
         text = deadlines_dropped(text, _thing_words(text), self.deadlines, self.frames)
         # a heading whose name is a thing's ("Prep card:", "Lamp game:"): the frame rule keeps thing words
         self.headings = []
         text = heading_dropped(text, self.headings)
+        # what the rules above leave that a learned classifier is sure is a voice's frame, naming nothing
+        # check 1 asks about (h287)
+        text = frames_classified(text, _thing_words(text), self.frames)
         # "Mom says put ...", "P.S.", "I was hoping you could"; "the mug stays put" is "don't move the mug"
         return unmoved_said(untreated_said(instead_said(without_framing(without_reasons(text)))))
 
