@@ -12,7 +12,7 @@ from collections.abc import Iterator
 
 import pytest
 
-from nl2hltl2plan.language.learned import structure_train, train
+from nl2hltl2plan.language.learned import request_units, structure_train, train
 from nl2hltl2plan.language.learned.data import data_fingerprint
 from nl2hltl2plan.language.learned.slot_model import SlotModel, packaged_path
 from nl2hltl2plan.language.learned.structure import ARTIFACT, StructureModel
@@ -49,6 +49,16 @@ def test_structure_model_was_trained_on_todays_data(hint: str) -> None:
     model = StructureModel.load(packaged_path(ARTIFACT))
     today = data_fingerprint(structure_train.training_data())
     assert model.data_sha == today, hint
+
+
+# composes 4,000 framed messages (about 10 s): `sweep`
+@pytest.mark.sweep
+def test_request_model_was_trained_on_todays_data() -> None:
+    path = packaged_path(request_units.ARTIFACT)
+    model = request_units.RequestModel.load(path)
+    rebuild = f"PYTHONHASHSEED=0 nl2hltl2plan train language --only request --request-out {path}"
+    today = data_fingerprint(request_units.training_data())
+    assert model.data_sha == today, f"stale: rebuild with `{rebuild}`"
 
 
 def test_slot_model_was_trained_on_todays_data(hint: str) -> None:

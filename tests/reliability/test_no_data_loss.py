@@ -71,7 +71,7 @@ def test_pictures_are_written_atomically(tmp_path: Path) -> None:
 def test_train_writes_to_the_user_cache_by_default(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path))
     written: list[Path] = []
-    from nl2hltl2plan.language.learned import structure_train, train
+    from nl2hltl2plan.language.learned import request_units, structure_train, train
 
     def record(out: Path, seed: int = 0) -> str:  # stands in for minutes of training
         written.append(out)
@@ -79,9 +79,11 @@ def test_train_writes_to_the_user_cache_by_default(monkeypatch: pytest.MonkeyPat
 
     monkeypatch.setattr(train, "train_and_report", record)
     monkeypatch.setattr(structure_train, "train_and_report", record)
+    monkeypatch.setattr(request_units, "train_and_report", record)
     assert main(["train", "language"]) == 0
     models = tmp_path / "nl2hltl2plan" / "models"
-    assert written == [models / "structure_model.npz", models / "slot_model.npz"]  # the structure first
+    # the structure first (the slot model's ranker reads with it)
+    assert written == [models / f"{m}_model.npz" for m in ("structure", "slot", "request")]
     assert slot_model.packaged_model_path() not in written
     written.clear()
     assert main(["train", "language", "--only", "structure"]) == 0

@@ -1,5 +1,5 @@
-"""`nl2hltl2plan train language [-o PATH] [--structure-out PATH] [--only slots|structure] [--seed S]
-[--encoder]`: rebuild the learned language models.
+"""`nl2hltl2plan train language [-o PATH] [--structure-out PATH] [--request-out PATH]
+[--only slots|structure|request] [--seed S] [--encoder]`: rebuild the learned language models.
 
 Trains the slot model (`language.learned`) on ALFRED's train annotations (text-faithful labels) minus
 the benchmark's excluded trials, prints its slot accuracy on valid_seen / valid_unseen, and writes
@@ -8,7 +8,8 @@ then prefers to the packaged models; the installed package is never written): th
 (task spans and their relations, a CRF over synthetic compositions of the same annotations), with its
 span accuracy on compositions of valid_unseen, then the slot model, whose type ranker learns from the
 offline parser's readings with the structure model the parser prefers (the one just written, when it is
-written to the default or the packaged place: then one run rebuilds both, whatever was there before).
+written to the default or the packaged place: then one run rebuilds both, whatever was there before),
+and the request-unit classifier (a voice's frame against its request, `request_units`, about 40 s).
 Each file is written to a temporary file and renamed: a kill leaves the previous model. Deterministic
 for a seed; about 3-4 minutes on 2 cores (needs the `train` extra). `--encoder` adds the pretrained
 encoder's sentence embeddings to the slot model (the `encoder` extra and its wheel; measured and not the
@@ -40,8 +41,11 @@ def register(sub: Any) -> None:
     lang.add_argument("--structure-out", type=Path, default=None,
                       help="where to write the structure model (default: "
                       "~/.cache/nl2hltl2plan/models/structure_model.npz, preferred likewise)")
-    lang.add_argument("--only", choices=["slots", "structure"], default=None,
-                      help="train only one of the two models")
+    lang.add_argument("--request-out", type=Path, default=None,
+                      help="where to write the request-unit classifier (default: "
+                      "~/.cache/nl2hltl2plan/models/request_model.npz, preferred likewise)")
+    lang.add_argument("--only", choices=["slots", "structure", "request"], default=None,
+                      help="train only one of the three models")
     lang.add_argument("--seed", type=seed, default=0, help="random seed, 0..2^32-1 (default 0)")
     lang.add_argument("--encoder", action="store_true",
                       help="the slot model (not the structure model) also reads the pretrained "
@@ -52,8 +56,8 @@ def register(sub: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from nl2hltl2plan.io import check_output_file
-    from nl2hltl2plan.language.learned import structure_train
-    from nl2hltl2plan.language.learned.slot_model import user_model_path
+    from nl2hltl2plan.language.learned import request_units, structure_train
+    from nl2hltl2plan.language.learned.slot_model import user_model_path, user_path
     from nl2hltl2plan.language.learned.structure import user_structure_path
     from nl2hltl2plan.language.learned.train import train_and_report
 
@@ -62,6 +66,8 @@ def run(args: argparse.Namespace) -> int:
         ("structure", args.structure_out or user_structure_path(), structure_train.train_and_report),
         ("slots", args.out or user_model_path(), partial(train_and_report, encoder=True) if args.encoder
          else train_and_report),
+        # the request-unit classifier (a voice's frame against its request, h287)
+        ("request", args.request_out or user_path(request_units.ARTIFACT), request_units.train_and_report),
     ]
     for name, path, job in jobs:
         if args.only not in (None, name):

@@ -49,6 +49,7 @@ from nl2hltl2plan.language.headings import heading_dropped, heading_note, note_c
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_name_notes, descriptive_names
 from nl2hltl2plan.language.landmarks import put_away_unread
+from nl2hltl2plan.language.learned.request_units import frames_classified
 from nl2hltl2plan.language.negation_forms import instead_said, untreated_said
 from nl2hltl2plan.language.negations import exclusions_unread, unmoved_said
 from nl2hltl2plan.language.numbered_steps import step_order
@@ -181,6 +182,9 @@ class _HouseholdReader(SharedGrammar):
         # a heading whose name is a thing's ("Prep card:", "Lamp game:"): the frame rule keeps thing words
         self.headings = []
         text = heading_dropped(text, self.headings)
+        # what the rules above leave that a learned classifier is sure is a voice's frame, naming nothing
+        # check 1 asks about (h287)
+        text = frames_classified(text, _thing_words(text), self.frames)
         # "Mom says put ...", "P.S.", "I was hoping you could"; "the mug stays put" is "don't move the mug"
         return unmoved_said(untreated_said(instead_said(without_framing(without_reasons(text)))))
 
