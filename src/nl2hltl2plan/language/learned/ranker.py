@@ -29,7 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from nl2hltl2plan.errors import DataError
-from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.grounding import find_mentions, lexicon
 
 C = 1.0  # inverse regularisation, chosen by the group 5-fold check (0.1-3 within 1.5 points)
 _FLOOR = 1e-3  # the slot model's probability is clipped here (confidences are reported to 3 decimals)
@@ -97,6 +97,37 @@ def size_said(clause: str, ranked: list[tuple[str, float]]) -> list[tuple[str, f
     return ranked
 
 
+def stray_modifiers(clause: str, types: set[str]) -> set[str]:
+    """The words of a compound name of the ambiguous word ("end" of "end table", "coffee" of "coffee table")
+    said apart from it, in another phrase ("the table at the end of the bed", "the table by the coffee
+    machine"): a landmark's words build no compound across its boundary, so they are no evidence for the
+    compound's type.
+
+    >>> sorted(stray_modifiers("put it on the table at the end of the bed", {"SideTable", "DiningTable"}))
+    ['end']
+    >>> stray_modifiers("put it on the end table", {"SideTable", "DiningTable"})
+    set()
+    """
+    low, out = clause.lower(), set()
+    words = _words(clause)
+    for m in find_mentions(clause):
+        if len(types & set(m.entry.types)) < 2:
+            continue
+        for compound in _compounds(m.entry.phrase.split()[-1], m.entry.canonical):
+            if set(compound[:-1]) & words and not re.search(r"\b" + r"\s+".join(compound), low):
+                out.update(compound[:-1])
+    return out & words
+
+
+@cache
+def _compounds(head: str, canonical: str) -> tuple[tuple[str, ...], ...]:
+    """The lexicon's names of other entries that end in `head` ("end table", "coffee table" for "table")."""
+    return tuple(
+        words for words, (entry, _) in lexicon().items()
+        if len(words) > 1 and words[-1] == head and entry.canonical != canonical
+    )  # fmt: skip
+
+
 class TypeRanker:
     """feature -> weight; `order` needs only the dictionary, `fit` scikit-learn."""
 
@@ -112,7 +143,7 @@ class TypeRanker:
         if len(candidates) < 2:
             return candidates
         total = sum(q for _, q in candidates) or 1.0
-        words = _words(clause)
+        words = _words(clause) - stray_modifiers(clause, {t for t, _ in candidates})
         scores = [
             sum(self.weights.get(f, 0.0) * v for f, v in self._features(clause, words, t, q / total).items())
             for t, q in candidates
