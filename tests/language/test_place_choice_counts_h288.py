@@ -48,8 +48,8 @@ def test_a_split_between_the_places_is_rejected_and_one_place_is_accepted():
 
 @pytest.mark.data
 def test_the_plan_puts_both_in_one_place(capsys):
-    code = main(["plan", "put two mugs in the sink or the cabinet", "--world", "FloorPlan15", "--llm", "offline",
-                 "--json"])  # fmt: skip
+    text = "put two mugs in the sink or the cabinet"
+    code = main(["plan", text, "--world", "FloorPlan15", "--llm", "offline", "--json"])
     out = capsys.readouterr()
     assert code == 0, out.err
     got = json.loads(out.out)
@@ -70,9 +70,8 @@ def test_one_object_keeps_the_leaf_disjunction():
 @pytest.mark.data
 def test_a_ban_on_one_of_the_places_is_no_contradiction():
     """A place of the choice is not required, so banning it leaves the other (the checker enforces both)."""
-    res = translate(
-        "put two mugs in the sink or the cabinet, but never open the cabinet", scenario_world({"scene": "FloorPlan15"})
-    )
+    text = "put two mugs in the sink or the cabinet, but never open the cabinet"
+    res = translate(text, scenario_world({"scene": "FloorPlan15"}))
     assert res.spec is not None and res.spec.constraints
 
 
@@ -97,7 +96,7 @@ def test_a_glass_and_then_the_cup_are_two_things(text, world, tasks):
 
 
 def test_a_landmark_builds_no_compound_name_across_its_boundary():
-    """ "the table by the coffee machine": "coffee" is the machine's, no evidence for a coffee table's type."""
+    """ "the table by the coffee machine": "coffee" is the machine's, no evidence for a coffee table."""
     from nl2hltl2plan.language.learned.ranker import TypeRanker
 
     ranker = TypeRanker({"SideTable|coffee": 2.0, "SideTable|end": 2.0, "logq": 1.0})

@@ -2,7 +2,8 @@
 
 Root "1" is the whole instruction; with several base tasks each is a child of the root (or of a group
 node when one sentence groups several tasks with the same relations to the rest); a base task with
-two objects (place_two) is a non-leaf whose leaves are one object each.
+two objects (place_two) is a non-leaf whose leaves are one object each; with a choice of places the count
+binds to one place, so its node is an any-of node over one node per place, each one leaf per object.
 """
 
 from __future__ import annotations
@@ -45,7 +46,8 @@ def task_nodes(node_id: str, task: BaseTaskSpec, text: str | None = None) -> tup
     for alt, place in zip(alts, places, strict=True):
         kids = [f"{alt}.{j}" for j in range(1, k + 1)]
         nodes.append(HTTNode(id=alt, text=f"{task.text} (all {k} in the {'|'.join(place)})", children=kids))
-        nodes += [HTTNode(id=kid, text=f"{task.text} (object {j} of {k}, {place[0]})") for j, kid in enumerate(kids, 1)]
+        for j, kid in enumerate(kids, 1):
+            nodes.append(HTTNode(id=kid, text=f"{task.text} (object {j} of {k}, {place[0]})"))
         leaves += kids
     return nodes, leaves
 

@@ -293,7 +293,9 @@ _ONE_TYPE_NAMES = {w: name for name, words in word_categories("one_type_names.tx
 
 def _one_type_name(np: NP) -> str | None:
     """Which everyday thing of `one_type_names.txt` the phrase names (None: none, or no entry)."""
-    return _ONE_TYPE_NAMES.get(np.entry.phrase.split()[-1]) if np.entry is not None and np.entry.phrase else None
+    if np.entry is None or not np.entry.phrase:
+        return None
+    return _ONE_TYPE_NAMES.get(np.entry.phrase.split()[-1])
 
 
 UNDER = {"under", "underneath", "below", "beneath"}

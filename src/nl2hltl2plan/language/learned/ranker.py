@@ -108,8 +108,8 @@ def stray_modifiers(clause: str, types: set[str]) -> set[str]:
     >>> stray_modifiers("put it on the end table", {"SideTable", "DiningTable"})
     set()
     """
-    low, out = clause.lower(), set()
-    words = _words(clause)
+    low, words = clause.lower(), _words(clause)
+    out: set[str] = set()
     for m in find_mentions(clause):
         if len(types & set(m.entry.types)) < 2:
             continue
