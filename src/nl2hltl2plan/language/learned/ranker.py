@@ -34,6 +34,7 @@ from nl2hltl2plan.language.grounding import find_mentions, lexicon
 C = 1.0  # inverse regularisation, chosen by the group 5-fold check (0.1-3 within 1.5 points)
 _FLOOR = 1e-3  # the slot model's probability is clipped here (confidences are reported to 3 decimals)
 _SIZE_WORDS = Path(__file__).with_name("size_words.txt")
+_LANDMARK_WORDS = Path(__file__).with_name("landmark_words.txt")
 _BEFORE = 2  # a size word this many words before the name at most ("the little brown table")
 
 
@@ -108,15 +109,25 @@ def stray_modifiers(clause: str, types: set[str]) -> set[str]:
     >>> stray_modifiers("put it on the end table", {"SideTable", "DiningTable"})
     set()
     """
-    low, words = clause.lower(), _words(clause)
     out: set[str] = set()
     for m in find_mentions(clause):
         if len(types & set(m.entry.types)) < 2:
             continue
+        after = re.findall(r"[a-z]+", clause[m.char_end :].lower())
+        opens = next((k for k, w in enumerate(after) if w in _landmark_words()), None)
+        if opens is None:  # no landmark phrase after the name ("a bottle of hand soap": one thing)
+            continue
+        beyond = set(after[opens + 1 :])
         for compound in _compounds(m.entry.phrase.split()[-1], m.entry.canonical):
-            if set(compound[:-1]) & words and not re.search(r"\b" + r"\s+".join(compound), low):
-                out.update(compound[:-1])
-    return out & words
+            out.update(w for w in compound[:-1] if w in beyond)
+    return out
+
+
+@cache
+def _landmark_words() -> frozenset[str]:
+    """The words that open a landmark or place phrase (`landmark_words.txt`)."""
+    text = _LANDMARK_WORDS.read_text()
+    return frozenset(w for line in text.splitlines() if not line.startswith("#") for w in line.split())
 
 
 @cache
