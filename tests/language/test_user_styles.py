@@ -366,10 +366,6 @@ KNOWN_WRONG: set[str] = {
     "Microwave the potato, then drop the tomato in the sink.",
     "Chill the lettuce and put it in the sink, and the tomato too, but on the counter.",
     "First heat the potato, and then put it in the fridge. Chill the apple and put it in the microwave.",
-    # h264's red-team probes (users_h264dev/held; held scored once, results/language/h264.md): "a glass ...
-    # the cup" joined as one container (the drafts join by type: ALFRED says one thing two ways; h273 left it)
-    "Put a spoon in the glass and the cup in the sink.",
-    "Put a fork in the glass and the cup on the counter.",
     # h266's held set (paper_h266held; scored once, results/language/h266.md): "A ... goes on the table
     # afterwards" after two container pairs orders it after the last pair only
     "Put a lettuce slice on a plate and put the plate in the fridge. Put an apple slice in a pot and the pot "
@@ -380,9 +376,6 @@ KNOWN_WRONG: set[str] = {
     "put a pen in a cup and put it on the table at the end of the bed, oh and both books go there too",
     "put all the spray bottles in the cabinet under the sink and wash a cloth and put it on the toilet",
     "put 2 soap bottles and a spray bottle on the toilet. the rest of the spray bottles go in the cabinet",
-    # h274's held set (choices_h274held; scored once, results/language/h274.md): "towel" is read as the
-    # HandTowel, since ALFRED puts no Towel on a shelf or in a cart; its truth says Towel (grounding class)
-    "put the towel on the shelf or in the cart",
     # h285's held-out set (paper_h285; scored once at 88e8a7c7, results/language/h285.md): "it" after a plural
     # taken as the clocks, not the racket; "after that" after a gapped "and two pencils there too" orders
     # both tasks (the truth: the clause's one); "hack number one ... number two" read as an order

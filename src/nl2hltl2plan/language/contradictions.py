@@ -21,6 +21,7 @@ from __future__ import annotations
 from collections.abc import Iterator, Mapping, Sequence
 
 from nl2hltl2plan.errors import HTTError
+from nl2hltl2plan.language.htt_build import bound_places
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec, transitive_closure
 from nl2hltl2plan.logic.atom import Atom
 from nl2hltl2plan.logic.constraints import Constraint
@@ -92,7 +93,8 @@ def _required(
 ) -> Iterator[list[str]]:
     """What the task cannot be done without: each a list of atoms, any one of which will do (the
     object's acceptable types)."""
-    for leaf in sorted(k for k, t in leaf_task.items() if t == task.id):
+    alternatives = bool(bound_places(task))  # one place's leaves or the other's: no leaf is required
+    for leaf in sorted(k for k, t in leaf_task.items() if t == task.id and not alternatives):
         spec = leaf_specs.get(leaf)
         if not isinstance(spec, list):  # a formula leaf: its atoms need not all happen
             continue

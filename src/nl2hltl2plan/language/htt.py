@@ -32,6 +32,9 @@ class HTTNode(BaseModel):
     text: str = ""
     children: list[str] = Field(default_factory=list)
     actions: list[str] | None = None
+    # the children are alternatives, the node is done when one of them is: a count bound to one of the
+    # places said ("two mugs in the sink or the cabinet": both in one, never one in each)
+    any_of: bool = Field(default=False, exclude_if=lambda v: not v)
 
 
 class HTT(BaseModel):

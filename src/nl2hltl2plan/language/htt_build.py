@@ -2,7 +2,8 @@
 
 Root "1" is the whole instruction; with several base tasks each is a child of the root (or of a group
 node when one sentence groups several tasks with the same relations to the rest); a base task with
-two objects (place_two) is a non-leaf whose leaves are one object each.
+two objects (place_two) is a non-leaf whose leaves are one object each; with a choice of places the count
+binds to one place, so its node is an any-of node over one node per place, each one leaf per object.
 """
 
 from __future__ import annotations
@@ -17,6 +18,52 @@ from nl2hltl2plan.language.task_specs import BaseTaskSpec, transitive_closure, t
 def n_leaves(task: BaseTaskSpec) -> int:
     """Leaves of a base task: one per object (place_two, "heat a couple of slices"), as in the recipes."""
     return max(1, task.count)
+
+
+def bound_places(task: BaseTaskSpec) -> list[list[str]]:
+    """A count with a choice of places ("two mugs in the sink or the cabinet"): the places the world can
+    take (each its types, as `receptacle` keeps them), bound to the whole count; empty for any other task."""
+    if task.count < 2 or not task.places:
+        return []
+    took = set(task.receptacle or ())
+    groups = [kept for place in task.places if (kept := [t for t in place if t in took])]
+    return groups if len(groups) > 1 else []
+
+
+def task_nodes(node_id: str, task: BaseTaskSpec, text: str | None = None) -> tuple[list[HTTNode], list[str]]:
+    """The nodes of one base task under `node_id`, and its leaves: one leaf, one per object, or, for a
+    count bound to one of several places, an any-of node over one node per place, each one leaf per object."""
+    k, places = n_leaves(task), bound_places(task)
+    if k == 1:
+        return [HTTNode(id=node_id, text=text or task.text)], [node_id]
+    if not places:
+        kids = [f"{node_id}.{j}" for j in range(1, k + 1)]
+        objects = [HTTNode(id=kid, text=f"{task.text} (object {j} of {k})") for j, kid in enumerate(kids, 1)]
+        return [HTTNode(id=node_id, text=text or task.text, children=kids), *objects], kids
+    alts = [f"{node_id}.{p}" for p in range(1, len(places) + 1)]
+    nodes = [HTTNode(id=node_id, text=text or task.text, children=alts, any_of=True)]
+    leaves: list[str] = []
+    for alt, place in zip(alts, places, strict=True):
+        kids = [f"{alt}.{j}" for j in range(1, k + 1)]
+        nodes.append(HTTNode(id=alt, text=f"{task.text} (all {k} in the {'|'.join(place)})", children=kids))
+        for j, kid in enumerate(kids, 1):
+            nodes.append(HTTNode(id=kid, text=f"{task.text} (object {j} of {k}, {place[0]})"))
+        leaves += kids
+    return nodes, leaves
+
+
+def rebind(htt: HTT, task_node: dict[str, str], leaf_task: dict[str, str], task: BaseTaskSpec) -> HTT:
+    """The HTT with `task`'s subtree built again (its places were widened after the tree was built);
+    `leaf_task` is updated in place."""
+    node_id = task_node[task.id]
+    old = {node_id} | {n.id for n in htt.nodes if n.id.startswith(node_id + ".")}
+    for leaf in [leaf for leaf in leaf_task if leaf in old]:
+        del leaf_task[leaf]
+    nodes, leaves = task_nodes(node_id, task, htt.node(node_id).text)
+    leaf_task.update(dict.fromkeys(leaves, task.id))
+    at = next(i for i, n in enumerate(htt.nodes) if n.id == node_id)
+    kept = [n for n in htt.nodes if n.id not in old]
+    return htt.model_copy(update={"nodes": kept[:at] + nodes + kept[at:]})
 
 
 def build_htt(
@@ -62,16 +109,9 @@ def build_htt(
 
     def add_task(node_id: str, task: BaseTaskSpec, text: str | None = None) -> None:
         task_node[task.id] = node_id
-        k = n_leaves(task)
-        if k == 1:
-            nodes.append(HTTNode(id=node_id, text=text or task.text))
-            leaf_task[node_id] = task.id
-            return
-        kids = [f"{node_id}.{j}" for j in range(1, k + 1)]
-        nodes.append(HTTNode(id=node_id, text=text or task.text, children=kids))
-        for j, kid in enumerate(kids, 1):
-            nodes.append(HTTNode(id=kid, text=f"{task.text} (object {j} of {k})"))
-            leaf_task[kid] = task.id
+        made, leaves = task_nodes(node_id, task, text)
+        nodes.extend(made)
+        leaf_task.update(dict.fromkeys(leaves, task.id))
 
     def add_group(node_id: str, members: list[str], text: str | None = None) -> None:
         kids = [f"{node_id}.{j}" for j in range(1, len(members) + 1)]

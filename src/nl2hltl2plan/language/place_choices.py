@@ -25,6 +25,7 @@ from nl2hltl2plan.domain.plan_events import PlanEvent
 from nl2hltl2plan.domain.task_kinds import camel_words
 from nl2hltl2plan.errors import NoPlaceError
 from nl2hltl2plan.language.grounding import AffordanceLookup, Mention, alfred_lookup, find_mentions, tokens
+from nl2hltl2plan.language.htt_build import bound_places, rebind
 from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.spec_builder import spec_name
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
@@ -172,11 +173,15 @@ def widen(res: LanguageResult, said: str, choices: list[PlaceChoice], world: Wor
             notes.append(f"{c.said!r}: either place was allowed; {'; '.join(why)}, so the other is used")
         receptacle = list(dict.fromkeys(t for place in possible for t in place))
         tasks[hit[0]] = task.model_copy(update={"receptacle": receptacle, "places": places})
-    htt = res.htt.model_copy(deep=True)
+    htt, leaf_task = res.htt.model_copy(deep=True), dict(res.leaf_task)
+    for task in tasks:  # a count takes one of the places for all its objects: the tree says so
+        if bound_places(task) and task.id in res.task_node:
+            htt = rebind(htt, res.task_node, leaf_task, task)
     if htt.root.text == res.instruction:
         htt.root.text = said
     htt.instruction = said
-    return res.model_copy(update={"tasks": tasks, "assumptions": notes, "instruction": said, "htt": htt})
+    update = {"tasks": tasks, "assumptions": notes, "instruction": said, "htt": htt, "leaf_task": leaf_task}
+    return res.model_copy(update=update)
 
 
 def _possible(

@@ -49,8 +49,12 @@ def build_spec(
         else:
             children = [by_id[c] for c in v.children]
             stack.extend((c, k + 1) for c in reversed(children))
+            names = [spec_name(c.id) for c in children]
+            if v.any_of:  # alternatives: a disjunction, which no relation compiler writes
+                levels[k - 1][spec_name(v.id)] = " | ".join(f"F {n}" for n in names)
+                continue
             relations = [(spec_name(a), spec_name(b)) for a, b in htt.sibling_relations(v.id)]
-            levels[k - 1][spec_name(v.id)] = generate_ltl([spec_name(c.id) for c in children], relations)
+            levels[k - 1][spec_name(v.id)] = generate_ltl(names, relations)
     # keep each level in node order for readable output
     order = {spec_name(n.id): i for i, n in enumerate(htt.nodes)}
     return HierarchicalSpec([dict(sorted(level.items(), key=lambda kv: order[kv[0]])) for level in levels])

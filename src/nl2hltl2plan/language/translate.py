@@ -35,7 +35,7 @@ from nl2hltl2plan.language.counts import take_every_instance
 from nl2hltl2plan.language.courtesy import without_courtesy
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
 from nl2hltl2plan.language.headings import unlabelled
-from nl2hltl2plan.language.htt_build import build_htt
+from nl2hltl2plan.language.htt_build import bound_places, build_htt
 from nl2hltl2plan.language.llm.client import LLMClient
 from nl2hltl2plan.language.llm_reading import cross_check, llm_leaf_actions, read_with_llm
 from nl2hltl2plan.language.ltl_generation import llm_generate_ltl, translator_client
@@ -336,9 +336,14 @@ def recipe_leaf_specs(
         by_task.setdefault(t, []).append(leaf)
     demand = demand_of(tasks)  # once, not once per task: linear in the number of tasks
     for task in tasks:
-        specs = task.leaf_specs(world, demand=demand)
-        for leaf, spec in zip(sorted(by_task.get(task.id, [])), specs, strict=False):
-            out[leaf] = spec
+        leaves = sorted(by_task.get(task.id, []))
+        places = bound_places(task)
+        if places and len(leaves) == task.count * len(places):  # one recipe per place, all its objects
+            for p, place in enumerate(places):
+                specs = task.model_copy(update={"receptacle": place}).leaf_specs(world, demand=demand)
+                out.update(zip(leaves[p * task.count : (p + 1) * task.count], specs, strict=False))
+            continue
+        out.update(zip(leaves, task.leaf_specs(world, demand=demand), strict=False))
     return out
 
 

@@ -18,7 +18,9 @@ def htt_lines(htt: HTT, actions: bool = True, leaf_specs: dict | None = None) ->
         n = htt.node(node_id)
         out.append(f"{'  ' * depth}{n.id}  {n.text}")
         rels = htt.sibling_relations(node_id) if n.children else []
-        if rels:
+        if n.any_of:
+            out.append(f"{'  ' * (depth + 1)}one of: " + " | ".join(n.children))
+        elif rels:
             out.append(f"{'  ' * (depth + 1)}order: " + ", ".join(f"{a} < {b}" for a, b in rels))
         elif len(n.children) > 1:
             out.append(f"{'  ' * (depth + 1)}order: any")

@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from nl2hltl2plan.domain.task_kinds import MAX_COUNT
-from nl2hltl2plan.language.content_words import ROOM_WORDS
+from nl2hltl2plan.language.content_words import ROOM_WORDS, word_categories
 from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.phrases import COLOURS, DETERMINERS, NP, match_prep, parse_np, tokens
 from nl2hltl2plan.language.grounding import find_mentions
@@ -280,8 +280,22 @@ def _share_colour_nouns(items: list[Item]) -> None:
 
 # ----- drafts -> tasks ---------------------------------------------------------------------------------
 def same(a: NP | None, b: NP | None) -> bool:
-    """Do two noun phrases name the same kind of thing (the same lexicon entry or the same words)?"""
-    return a is not None and b is not None and bool(a.key) and a.key == b.key
+    """Do two noun phrases name the same kind of thing (the same lexicon entry or the same words), and not
+    two things the entry lumps in one type ("the glass" and "the cup", `one_type_names.txt`)?"""
+    if a is None or b is None or not a.key or a.key != b.key:
+        return False
+    names = {_one_type_name(np) for np in (a, b)}
+    return len(names) == 1 or None in names
+
+
+_ONE_TYPE_NAMES = {w: name for name, words in word_categories("one_type_names.txt").items() for w in words}
+
+
+def _one_type_name(np: NP) -> str | None:
+    """Which everyday thing of `one_type_names.txt` the phrase names (None: none, or no entry)."""
+    if np.entry is None or not np.entry.phrase:
+        return None
+    return _ONE_TYPE_NAMES.get(np.entry.phrase.split()[-1])
 
 
 UNDER = {"under", "underneath", "below", "beneath"}

@@ -29,11 +29,12 @@ from pathlib import Path
 import numpy as np
 
 from nl2hltl2plan.errors import DataError
-from nl2hltl2plan.language.grounding import find_mentions
+from nl2hltl2plan.language.grounding import find_mentions, lexicon
 
 C = 1.0  # inverse regularisation, chosen by the group 5-fold check (0.1-3 within 1.5 points)
 _FLOOR = 1e-3  # the slot model's probability is clipped here (confidences are reported to 3 decimals)
 _SIZE_WORDS = Path(__file__).with_name("size_words.txt")
+_LANDMARK_WORDS = Path(__file__).with_name("landmark_words.txt")
 _BEFORE = 2  # a size word this many words before the name at most ("the little brown table")
 
 
@@ -97,6 +98,47 @@ def size_said(clause: str, ranked: list[tuple[str, float]]) -> list[tuple[str, f
     return ranked
 
 
+def stray_modifiers(clause: str, types: set[str]) -> set[str]:
+    """The words of a compound name of the ambiguous word ("end" of "end table", "coffee" of "coffee table")
+    said apart from it, in another phrase ("the table at the end of the bed", "the table by the coffee
+    machine"): a landmark's words build no compound across its boundary, so they are no evidence for the
+    compound's type.
+
+    >>> sorted(stray_modifiers("put it on the table at the end of the bed", {"SideTable", "DiningTable"}))
+    ['end']
+    >>> stray_modifiers("put it on the end table", {"SideTable", "DiningTable"})
+    set()
+    """
+    out: set[str] = set()
+    for m in find_mentions(clause):
+        if len(types & set(m.entry.types)) < 2:
+            continue
+        after = re.findall(r"[a-z]+", clause[m.char_end :].lower())
+        opens = next((k for k, w in enumerate(after) if w in _landmark_words()), None)
+        if opens is None:  # no landmark phrase after the name ("a bottle of hand soap": one thing)
+            continue
+        beyond = set(after[opens + 1 :])
+        for compound in _compounds(m.entry.phrase.split()[-1], m.entry.canonical):
+            out.update(w for w in compound[:-1] if w in beyond)
+    return out
+
+
+@cache
+def _landmark_words() -> frozenset[str]:
+    """The words that open a landmark or place phrase (`landmark_words.txt`)."""
+    text = _LANDMARK_WORDS.read_text()
+    return frozenset(w for line in text.splitlines() if not line.startswith("#") for w in line.split())
+
+
+@cache
+def _compounds(head: str, canonical: str) -> tuple[tuple[str, ...], ...]:
+    """The lexicon's names of other entries that end in `head` ("end table", "coffee table" for "table")."""
+    return tuple(
+        words for words, (entry, _) in lexicon().items()
+        if len(words) > 1 and words[-1] == head and entry.canonical != canonical
+    )  # fmt: skip
+
+
 class TypeRanker:
     """feature -> weight; `order` needs only the dictionary, `fit` scikit-learn."""
 
@@ -112,7 +154,7 @@ class TypeRanker:
         if len(candidates) < 2:
             return candidates
         total = sum(q for _, q in candidates) or 1.0
-        words = _words(clause)
+        words = _words(clause) - stray_modifiers(clause, {t for t, _ in candidates})
         scores = [
             sum(self.weights.get(f, 0.0) * v for f, v in self._features(clause, words, t, q / total).items())
             for t, q in candidates
