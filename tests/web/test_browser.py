@@ -103,6 +103,9 @@ def test_progress_in_order_pictures_and_downloads(page):
     assert inked > 100  # the robots and their paths are drawn over the world picture
 
 
+# the server's cancel has an in-process twin (test_api.py::test_deadline_and_cancel_end_the_worker); the
+# default run keeps one browser test per page flow that has none (docs/reliability.md, rule 3)
+@pytest.mark.sweep
 def test_cancel_stops_the_work_on_the_server(page, server):
     page.fill("#robots", "5")
     page.select_option("#mode", "exact")
@@ -165,6 +168,8 @@ def test_every_control_changes_the_request(page, tmp_path):
     assert sent()["team"] == team
 
 
+# twin: test_api.py::test_an_ambiguity_choice_replans (the same choice re-planned, in process)
+@pytest.mark.sweep
 def test_an_ambiguity_choice_replans(page):
     plan(page, "Put the utensils in the lower rack.")
     first = json.loads(page.text_content("#json"))
