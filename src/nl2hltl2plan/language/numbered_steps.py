@@ -52,7 +52,7 @@ _JOIN = r"(?:\s*,\s*(?:and\s+)?|\s+and\s+|\s*&\s*)"
 _REFS = (
     rf"(?:(?:{_LABEL_WORD}s\s+\#?{_NUMBER}(?:{_JOIN}\#?{_NUMBER})+)|{_STEP_REF}(?:{_JOIN}{_STEP_REF})*)"
 )
-_VERB = r"(?:(?:should|must|can|will)\s+)?(?:comes?|goes?|happens?|(?:is|are|be)\s+done)"
+_VERB = r"(?:(?:should|must|can|will)\s+)?(?:comes?|go(?:es)?|happens?|(?:is|are|be)\s+done)"
 _SAID = (
     re.compile(rf"^(?:do\s+)?(?P<a>{_REFS})\s+(?:{_VERB}\s+)?(?P<where>first|last)$", re.I),
     re.compile(
@@ -77,7 +77,7 @@ _REF_NUMBER = re.compile(r"\#?\d+|\((?:\d+|[a-h])\)|\b(?:one|two|three|four|firs
 # the opposite of what was asked, so it is refused by name
 # (or by a group of them, "do 1 n 2 first, 3 n 4 after": h266, read in turn as 1 < 2 < 3 < 4 at exit 0)
 _ORDER_SAID = (
-    rf"(?:do\s+)?{_STEP_REF}(?:\s*(?:,|and|n|&)\s*{_STEP_REF})*\s+(?:(?:comes?|goes?)\s+)?"
+    rf"(?:do\s+)?(?:{_REFS}|{_STEP_REF}(?:\s*(?:,|and|n|&)\s*{_STEP_REF})*)\s+(?:{_VERB}\s+)?"
     r"(?:first|last|before|after)\b"
 )
 _LOOSE = re.compile(rf"^{_ORDER_SAID}", re.I)
@@ -141,10 +141,10 @@ def step_order(text: str) -> str:
     as it is. Raises HTTError naming what cannot be read."""
     text = bullets_apart(text)
     _person_order(text)
-    if len(_STEP.findall(text)) >= 2:
+    if len(_marks(text)) >= 2:
         text = _DASHED_ORDER.sub(". ", text)
     sentences = re.split(r"(?<=[.!?])\s+", text.strip())
-    said = [(k, m) for k, s in enumerate(sentences) for p in _SAID if (m := p.match(s.strip(" .!?")))]
+    said = [(k, m) for k, s in enumerate(sentences) for p in _SAID if (m := p.match(_unpleased(s)))]
     if len(said) == 1 and _bare_without_steps(said[0][1], sentences, said[0][0]):
         # "Put the pen in the box. Do 2 before 1.": the line was read as nothing, at exit 0
         raise HTTError(f"{said[0][1][0]!r} names steps by number, but the instruction numbers fewer than two")
@@ -204,7 +204,7 @@ def _any_order(steps: dict[int, str], named: list[int]) -> str:
 def _steps_of(sentences: list[str], k: int) -> dict[int, str]:
     """The numbered steps of the text without its sentence `k`, where it numbers two or more (else none)."""
     rest = " ".join(sentences[:k] + sentences[k + 1 :])
-    marks = list(_STEP.finditer(rest))
+    marks = _marks(rest)
     try:  # from the first step: a heading before it ("hey! 4 things pls:") holds no step
         steps = _steps(rest[marks[0].start() :].lstrip() if marks else rest)
     except HTTError:
@@ -223,7 +223,7 @@ def _in_turn(text: str) -> str:
     order said: its steps in that order, "A, then B", or, with a free-order remark of its own sentence,
     its steps without their numbers. A first step left unnumbered before "Step 2" is step 1; steps
     numbered out of turn are refused; anything else comes back as it is."""
-    marks = list(_STEP.finditer(text))
+    marks = _marks(text)
     if len(marks) < 2 and not (marks and _marked(marks[0]) == 2):
         return text
     before = text[: marks[0].start()].strip(" .;")
@@ -257,6 +257,21 @@ def _frees_the_steps(steps: Iterable[str]) -> bool:
     )
 
 
+def _unpleased(sentence: str) -> str:
+    """A sentence without its stop and a closing "please" ("#1 last, please.")."""
+    return re.sub(r",?\s+please$", "", sentence.strip(" .!?"), flags=re.I)
+
+
+def _marks(text: str) -> list[re.Match[str]]:
+    """The step marks of `text` (`_STEP`). A signed label ("#2", "(b)") numbers steps only where the first
+    one opens the text or a sentence: inside one ("cloth #1: wash it") it is part of a thing's name."""
+    marks = list(_STEP.finditer(text))
+    signed = [m for m in marks if m["n"] is None]
+    if signed and text[: signed[0].start()].rstrip()[-1:] not in ("", ".", ":", ";", "!", "?"):
+        return [m for m in marks if m["n"] is not None]
+    return marks
+
+
 def _number(ref: str) -> int:
     """The number a step's label or reference says ("step two", "the second job", "#2", "(b)")."""
     words = ref.lower().replace("(", " ").replace(")", " ").replace("#", " ").split()
@@ -273,7 +288,7 @@ def _marked(mark: re.Match[str]) -> int:
 
 def _steps(text: str) -> dict[int, str]:
     """Step number -> its words (a heading before the first step, "Method:", is left out)."""
-    marks = list(_STEP.finditer(text))
+    marks = _marks(text)
     out: dict[int, str] = {}
     if not marks:
         return out
