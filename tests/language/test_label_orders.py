@@ -61,7 +61,8 @@ def test_a_label_order_against_the_numbered_turn(kitchen):
 @pytest.mark.data
 def test_a_group_of_labels_orders_only_what_it_names(kitchen):
     """Before: "Do 2 and 3 before 1." was refused; the step it does not name stays free."""
-    text = "#1 put the apple in the fridge #2 put the mug in the sink #3 put the egg in the sink. #3 before #1."
+    text = "#1 put the apple in the fridge #2 put the mug in the sink #3 put the egg in the sink."
+    text += " #3 before #1."
     assert read(text, kitchen) == (sorted([APPLE, MUG, EGG]), {(EGG, APPLE)})
 
 

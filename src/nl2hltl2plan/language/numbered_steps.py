@@ -12,9 +12,14 @@ nothing (step 1 before step 2: the opposite of what was asked).
   label's number no count; a step that frees what it lists, "Step two: B and C in any order", is a sentence
   of its own after "After that"); numbered out of turn, refused; with a free-order remark of its own
   sentence ("Any order is fine."), the numbers go;
-- an order between two of three or more steps (which leaves where the third goes unsaid), or one that names
-  a step the recipe does not have, is refused by name. An order the steps may come in freely ("Either step
-  may come first") is `free_order.txt`'s, which the grammar reads.
+- labels other than "step" (h292): "#2", "(2)", "(b)" (letters count from a), "Item 2:", "Job 2:", "Task 2:",
+  "Cue 2:"; a group of them ("Items 3 and 4 after item 1", "Cues 2 and 4 go before everything else", "Jobs 1
+  and 2 first"), a chain ("Job 2 first, then job 1") and "step two can wait until step one is done". An
+  order between some of three or more steps orders only those (the guide's "no temporal words, no order"):
+  the steps it does not name are free, each a sentence of its own; a lone step "first" or "last" keeps the
+  others in their numbered turn, as before;
+- an order that names a step the recipe does not have is refused by name. An order the steps may come in
+  freely ("Either step may come first") is `free_order.txt`'s, which the grammar reads.
 
 >>> step_order("1. put the mug in the sink. 2. put the egg in the fridge. Step 2 comes first.")
 'put the egg in the fridge, then put the mug in the sink.'
@@ -72,7 +77,10 @@ _SAID = (
         re.I,
     ),
 )
-_REF_NUMBER = re.compile(r"\#?\d+|\((?:\d+|[a-h])\)|\b(?:one|two|three|four|first|second|third|fourth)\b", re.I)
+# one step's number in a reference ("#2", "(b)", "two", "the second")
+_REF_NUMBER = re.compile(
+    r"\#?\d+|\((?:\d+|[a-h])\)|\b(?:one|two|three|four|first|second|third|fourth)\b", re.I
+)
 # any other order said by step numbers ("2 before 1, and 4 last"): read in the steps' numbered turn, it was
 # the opposite of what was asked, so it is refused by name
 # (or by a group of them, "do 1 n 2 first, 3 n 4 after": h266, read in turn as 1 < 2 < 3 < 4 at exit 0)
