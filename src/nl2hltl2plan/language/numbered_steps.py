@@ -209,6 +209,15 @@ def _any_order(steps: dict[int, str], named: list[int]) -> str:
     return words[0] if len(words) == 1 else " and ".join(words) + " in any order"
 
 
+def orders_by_label(text: str) -> bool:
+    """Whether a sentence of `text` orders steps by their labels ("Do (3) first", "Items 3 and 4 after item
+    1"): a list of "(1) ... (2) ..." is then left for `step_order`, which reads the order or refuses it."""
+    sentences = re.split(r"(?<=[.!?])\s+", text.strip())
+    return any(p.match(_unpleased(s)) for s in sentences for p in _SAID) or any(
+        _LOOSE.match(s.strip()) for s in sentences[1:]
+    )
+
+
 def _steps_of(sentences: list[str], k: int) -> dict[int, str]:
     """The numbered steps of the text without its sentence `k`, where it numbers two or more (else none)."""
     rest = " ".join(sentences[:k] + sentences[k + 1 :])
