@@ -172,7 +172,9 @@ def step_order(text: str) -> str:
 
 def _named(refs: str | None) -> list[int]:
     """The step numbers a reference names ("step 2", "Items 3 and 4", "#1 and (b)"), in the order said."""
-    return [_number(ref) for ref in _REF_NUMBER.findall(refs or "")]
+    # the "first" of a chain ("Job 2 first, then job 1") is its order, not a step
+    refs = re.sub(r"\s+first(?=\s*,?\s*(?:and\s+)?then\b)", "", refs or "", flags=re.I)
+    return list(dict.fromkeys(_number(ref) for ref in _REF_NUMBER.findall(refs)))
 
 
 def _ordered(m: re.Match[str], steps: dict[int, str]) -> str:
