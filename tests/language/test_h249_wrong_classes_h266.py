@@ -36,8 +36,9 @@ def test_a_heading_without_a_free_order_keeps_the_numbered_turn():
     [
         "hey! 3 things: 1) put the mug in the sink 2) put the apple in the fridge 3) put the egg in the "
         "microwave. do 1 n 2 first, 3 after",
+        # ("Do 2 and 3 before 1." is read since h292: test_label_orders.py)
         "1. put the mug in the sink 2. put the apple in the fridge 3. put the egg in the microwave. "
-        "Do 2 and 3 before 1.",
+        "Do 2 n 3 before 1, 4 after.",
     ],
 )
 def test_an_order_between_groups_of_numbered_steps_is_refused_by_name(text):

@@ -103,9 +103,10 @@ def test_an_order_said_by_step_number(kitchen, said):
     "text, named",
     [
         (
+            # (an order between two of three steps now orders those two, h292; one against itself is refused)
             "1. put the apple in the fridge 2. put the mug in the sink 3. put the egg in the microwave. "
-            "Step 2 before step 3.",
-            "leaves the order of the other steps unsaid",
+            "Step 2 before step 2.",
+            "orders a step against itself",
         ),
         ("put the apple in the fridge and the mug in the sink. Step 1 first.", "does not number"),
         # (a step outside the list; "Do it." names nothing and is dropped as frame since h244)

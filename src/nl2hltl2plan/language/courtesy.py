@@ -31,6 +31,7 @@ from nl2hltl2plan.language.content_words import (
     phrase_list_pattern,
     phrase_words,
 )
+from nl2hltl2plan.language.numbered_steps import orders_by_label
 
 
 def courtesy_pattern(*kinds: str) -> str:
@@ -469,10 +470,11 @@ def _each_placed(m: re.Match[str]) -> str:
 # count on from (1) or (a), so "(2 of them)" or a lone "(b)" stays
 _MARKER = re.compile(r"(?P<before>[:;,]?)\s*\((?P<n>\d|[a-h])\)\s*", re.I)
 
-
 def _unnumbered(text: str) -> str:
     """`text` with the markers of a numbered list, (1), (2), ... or (a), (b), ..., read as items' ";"."""
     marks = [m["n"].lower() for m in _MARKER.finditer(text)]
     if len(marks) < 2 or marks not in (list("123456789"[: len(marks)]), list("abcdefgh"[: len(marks)])):
+        return text
+    if orders_by_label(text):  # "(1) A (2) B. Do (3) first.": `numbered_steps` reads or refuses it (h292)
         return text
     return _MARKER.sub(lambda m: ": " if m["before"] == ":" else "; ", text).lstrip("; ")
