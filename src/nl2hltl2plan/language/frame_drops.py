@@ -25,7 +25,7 @@ import re
 
 from nl2hltl2plan.language.frame_filler import Dropped
 from nl2hltl2plan.language.frame_remarks import references_in_full, scene_remark
-from nl2hltl2plan.language.handover_discourse import frame_gone, heads_dropped, tails_dropped
+from nl2hltl2plan.language.handover_discourse import frame_gone, heads_dropped, tails_dropped, unsigned
 from nl2hltl2plan.language.request_times import timed_frame, times_dropped
 
 _SENTENCE_END = re.compile(r"(?<=[A-Za-z][.!?])\s+")  # not after a list's number ("1. Carrot ...")
@@ -47,6 +47,7 @@ def frames_dropped(
     seen = Dropped(dropped, names, only_general=True)
     # (the household's references, "Recipe card no. 7", "p. 14": said in full, h279)
     sentences = _SENTENCE_END.split((references_in_full(text) if times else text).strip())
+    sentences = unsigned(sentences, seen)  # "Night, Bo": a sign-off and its writer's name, both
     kind = _NUMBERED.match(sentences[0]) if sentences else None
     again = kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[kind.end() :], re.IGNORECASE)
     out = []

@@ -521,13 +521,35 @@ def _name(text: str) -> bool:
     return bool(_NAME.match(text)) and not known
 
 
-def _unsigned(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
-    """The sentences without the writer's name that signs the empty sign-off ending them: "Best, Ana", or
-    "Thanks," and then "Ana" on a line of its own."""
-    if len(sentences) > 1 and _name(sentences[-1]) and empty(sentences[-2], whole=True):
+# a sign-off's writer: a name (one or two capitalised words: "Bo", "Mr Okafor", "Aunt Jo") or a team's,
+# after a dash at most ("Thanks! - Priya")
+_SIGNATURE = re.compile(
+    r"^\s*(?:[-\u2013\u2014~]+\s*)?(?-i:(?:The\s+)?[A-Z][a-z]+(?:\s+(?:[A-Z][a-z]+|Team|Crew|Group|Desk))?)"
+    r"\s*[.!]*\s*$"
+)
+
+
+def _signature(text: str, names: frozenset[str]) -> bool:
+    """Whether `text` is a writer's name that names nothing a reader knows: no word of it is a block, a
+    place, an action, a content word or one of the world's thing words (`names`: "Night, Mug" names a mug)."""
+    words = re.findall(r"[a-z]+", text.lower())
+    known = (MEANING.search(w) or _ACTION.search(w) or _content_word(w) or w in names for w in words)
+    return bool(_SIGNATURE.match(text)) and not any(known)
+
+
+def unsigned(sentences: list[str], seen: Dropped = _NOTHING_SEEN) -> list[str]:
+    """The sentences without the sign-off and writer's name ending them: "Best, Ana", "Night, Bo", "Night,
+    Mr Okafor" (the sign-off found empty by `frame_gone`), or "Thanks!" and then "- Priya" on its own (the
+    name alone). A sign-off that only the general filler rule drops is added to `seen.dropped` with its
+    name ("Night, Bo"); a name that is one of the world's things (`seen.names`) is no writer's, and stays.
+    Every reader's frame rule (`plain`, `frame_drops.frames_dropped`): no later check sees the name alone."""
+    if len(sentences) > 1 and _signature(sentences[-1], seen.names) and empty(sentences[-2], whole=True):
+        if seen.dropped is not None and not empty(sentences[-2], whole=True, general=False):
+            seen.dropped.append(sentences[-1].strip(" -\u2013\u2014~.!"))  # the name of "Night. Bo"
         return sentences[:-1]
     signed = re.fullmatch(r"(.+),([^,]+)", sentences[-1]) if sentences else None
-    if signed and _name(signed[2]) and frame_gone(signed[1], Dropped(dropped)):
+    said = signed is not None and _signature(signed[2], seen.names)
+    if signed and said and frame_gone(signed[1], seen, shown=sentences[-1], edge=True, outer=True):
         return sentences[:-1]
     return sentences
 
@@ -579,7 +601,7 @@ def plain(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
     first-person narration said as the team's commands (see the module docstring); what only the general
     filler rule dropped is added to `dropped`, where given."""
     out = []
-    sentences = _unsigned(sentences, dropped)
+    sentences = unsigned(sentences, Dropped(dropped))
     edges = _voice_edges(sentences)
     for k, sentence in enumerate(sentences):
         framed = frame_gone(sentence, Dropped(dropped), whole=True, header=k == 0, voice=k in edges)
