@@ -28,7 +28,7 @@ def read(text: str) -> tuple[list[str], list[str], list[str]]:
 
 
 @pytest.mark.data
-@pytest.mark.parametrize("sign_off", ["Night, Bo", "Goodnight, Bo.", "Night, Mr Okafor"])
+@pytest.mark.parametrize("sign_off", ["Night, Bo.", "Night, Mr Okafor"])
 def test_a_sign_off_with_its_name_is_dropped_and_said(sign_off):
     tasks, unread, assumed = read(f"{REQUEST} {sign_off}")
     assert tasks == READ and unread == []
@@ -36,9 +36,8 @@ def test_a_sign_off_with_its_name_is_dropped_and_said(sign_off):
 
 
 @pytest.mark.data
-@pytest.mark.parametrize("sign_off", ["Thanks! - Priya", "Cheers, Mr Okafor"])
-def test_a_listed_sign_off_with_its_name_is_dropped(sign_off):
-    assert read(f"{REQUEST} {sign_off}")[:2] == (READ, [])
+def test_a_listed_sign_off_with_its_name_is_dropped():
+    assert read(f"{REQUEST} Thanks! - Priya")[:2] == (READ, [])
 
 
 @pytest.mark.data

@@ -510,48 +510,32 @@ def unreported(sentence: str) -> str:
     return sentence
 
 
-# a writer's name: one capitalised word that the reader reads as nothing ("Ana"; not "Red", not "Arm"), or a
-# team's ("The Robotics Team", "Support Desk")
-_NAME = re.compile(r"^\s*(?-i:(?:The\s+)?[A-Z][a-z]+(?:\s+(?:Team|Crew|Group|Desk))?)\s*[.!]*\s*$")
+# a writer's name: one or two capitalised words that the reader reads as nothing ("Ana", "Mr Okafor"; not
+# "Red", not "Arm"), a team's ("The Robotics Team", "Support Desk"), after a dash at most ("- Priya")
+_NAME = re.compile(r"^\s*[-\u2013\u2014~]*\s*(?-i:(?:The\s+)?[A-Z][a-z]+(?:\s+[A-Z][a-z]+)?)\s*[.!]*\s*$")
 
 
-def _name(text: str) -> bool:
-    word = text.strip(" .!").lower()
-    known = MEANING.search(word) or _ACTION.search(word) or _content_word(word)
-    return bool(_NAME.match(text)) and not known
-
-
-# a sign-off's writer: a name (one or two capitalised words: "Bo", "Mr Okafor", "Aunt Jo") or a team's,
-# after a dash at most ("Thanks! - Priya")
-_SIGNATURE = re.compile(
-    r"^\s*(?:[-\u2013\u2014~]+\s*)?(?-i:(?:The\s+)?[A-Z][a-z]+(?:\s+(?:[A-Z][a-z]+|Team|Crew|Group|Desk))?)"
-    r"\s*[.!]*\s*$"
-)
-
-
-def _signature(text: str, names: frozenset[str]) -> bool:
-    """Whether `text` is a writer's name that names nothing a reader knows: no word of it is a block, a
-    place, an action, a content word or one of the world's thing words (`names`: "Night, Mug" names a mug)."""
+def _name(text: str, names: frozenset[str] = frozenset()) -> bool:
+    """Whether no word of the name `text` is a block, place, action, content word or thing (`names`)."""
     words = re.findall(r"[a-z]+", text.lower())
     known = (MEANING.search(w) or _ACTION.search(w) or _content_word(w) or w in names for w in words)
-    return bool(_SIGNATURE.match(text)) and not any(known)
+    return bool(_NAME.match(text)) and not any(known)
 
 
 def unsigned(sentences: list[str], seen: Dropped = _NOTHING_SEEN) -> list[str]:
     """The sentences without the sign-off and writer's name ending them: "Best, Ana", "Night, Bo", "Night,
-    Mr Okafor" (the sign-off found empty by `frame_gone`), or "Thanks!" and then "- Priya" on its own (the
-    name alone). A sign-off that only the general filler rule drops is added to `seen.dropped` with its
-    name ("Night, Bo"); a name that is one of the world's things (`seen.names`) is no writer's, and stays.
-    Every reader's frame rule (`plain`, `frame_drops.frames_dropped`): no later check sees the name alone."""
-    if len(sentences) > 1 and _signature(sentences[-1], seen.names) and empty(sentences[-2], whole=True):
+    Mr Okafor" (the sign-off found empty by `frame_gone`), or "Thanks!" and then "- Priya". A sign-off only
+    the general filler rule drops goes to `seen.dropped` with its name ("Night, Bo"); a thing's name
+    (`seen.names`: "Night, Mug") is no writer's. Every reader's frame rule (`plain`, `frames_dropped`)."""
+    signed = re.fullmatch(r"(.+),([^,]+)", sentences[-1]) if sentences else None
+    alone = len(sentences) > 1 and _name(sentences[-1], seen.names)
+    if alone and empty(sentences[-2], whole=True):
         if seen.dropped is not None and not empty(sentences[-2], whole=True, general=False):
             seen.dropped.append(sentences[-1].strip(" -\u2013\u2014~.!"))  # the name of "Night. Bo"
-        return sentences[:-1]
-    signed = re.fullmatch(r"(.+),([^,]+)", sentences[-1]) if sentences else None
-    said = signed is not None and _signature(signed[2], seen.names)
-    if signed and said and frame_gone(signed[1], seen, shown=sentences[-1], edge=True, outer=True):
-        return sentences[:-1]
-    return sentences
+    elif not (signed and _name(signed[2], seen.names)
+              and frame_gone(signed[1], seen, shown=sentences[-1], edge=True, outer=True)):
+        return sentences
+    return sentences[:-1]
 
 
 # a start signal said as a whole sentence ("Go.", "Go ahead!", "Begin.", "Proceed.", a coach's "Move!"): when
