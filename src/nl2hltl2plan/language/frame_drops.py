@@ -47,7 +47,9 @@ def frames_dropped(
     seen = Dropped(dropped, names, only_general=True)
     # (the household's references, "Recipe card no. 7", "p. 14": said in full, h279)
     sentences = _SENTENCE_END.split((references_in_full(text) if times else text).strip())
-    sentences = unsigned(sentences, seen)  # "Night, Bo": a sign-off and its writer's name, both
+    # "Night, Bo": a sign-off and its writer's name, both (said after what the sentences before drop)
+    signed: list[str] | None = None if dropped is None else []
+    sentences = unsigned(sentences, seen._replace(dropped=signed))
     kind = _NUMBERED.match(sentences[0]) if sentences else None
     again = kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[kind.end() :], re.IGNORECASE)
     out = []
@@ -70,4 +72,6 @@ def frames_dropped(
             continue  # what is left of it is frame too ("Campers, gather round!": "gather round!")
         end = sentence.rstrip()[-1:]
         out.append(said + end if end in ".!?" and not said.endswith(end) else said)
+    if dropped is not None and signed:
+        dropped.extend(signed)
     return " ".join(s for s in out if s)
