@@ -367,7 +367,7 @@ _RELAYED = re.compile(
 
 def _unrelayed(sentence: str) -> str:
     relayed = _RELAYED.match(sentence)
-    if relayed is None or (relayed["name"] and not _name(relayed["name"])):
+    if relayed is None or (relayed["name"] and not writer_name(relayed["name"])):
         return sentence
     return ("do not " if relayed["not"] else "") + sentence[relayed.end() :]
 
@@ -378,7 +378,7 @@ _ASIDE = re.compile(rf"(?i)^\s*(?:{'|'.join(sorted(frame_words()['aside']))})\b[
 
 def _called(fragment: str) -> bool:
     called = _CALL_WORD.match(fragment)
-    return called is not None and _name(called[1])
+    return called is not None and writer_name(called[1])
 
 
 _INNER = re.compile(r",\s*([^,:;]{1,40}?)\s*(?=,)")
@@ -515,7 +515,7 @@ def unreported(sentence: str) -> str:
 _NAME = re.compile(r"^\s*[-\u2013\u2014~]*\s*(?-i:(?:The\s+)?[A-Z][a-z]+(?:\s+[A-Z][a-z]+)?)\s*[.!]*\s*$")
 
 
-def _name(text: str, names: frozenset[str] = frozenset()) -> bool:
+def writer_name(text: str, names: frozenset[str] = frozenset()) -> bool:
     """Whether no word of the name `text` is a block, place, action, content word or thing (`names`)."""
     words = re.findall(r"[a-z]+", text.lower())
     known = (MEANING.search(w) or _ACTION.search(w) or _content_word(w) or w in names for w in words)
@@ -528,11 +528,11 @@ def unsigned(sentences: list[str], seen: Dropped = _NOTHING_SEEN) -> list[str]:
     the general filler rule drops goes to `seen.dropped` with its name ("Night, Bo"); a thing's name
     (`seen.names`: "Night, Mug") is no writer's. Every reader's frame rule (`plain`, `frames_dropped`)."""
     signed = re.fullmatch(r"(.+),([^,]+)", sentences[-1]) if sentences else None
-    alone = len(sentences) > 1 and _name(sentences[-1], seen.names)
+    alone = len(sentences) > 1 and writer_name(sentences[-1], seen.names)
     if alone and empty(sentences[-2], whole=True):
         if seen.dropped is not None and not empty(sentences[-2], whole=True, general=False):
             seen.dropped.append(sentences[-1].strip(" -\u2013\u2014~.!"))  # the name of "Night. Bo"
-    elif not (signed and _name(signed[2], seen.names)
+    elif not (signed and writer_name(signed[2], seen.names)
               and frame_gone(signed[1], seen, shown=sentences[-1], edge=True, outer=True)):
         return sentences
     return sentences[:-1]

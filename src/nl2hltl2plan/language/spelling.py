@@ -353,7 +353,7 @@ def vocabulary_words() -> frozenset[str]:
     """The respelling vocabulary: the words of the word files `respelling_vocabulary.txt` declares (the
     lexicon's names, the verbs, order, count and negation words, the connectives the grammar reads),
     three letters or more, their comments left out; never a word of any other list (h289)."""
-    return declared_vocabulary(_package_text)
+    return declared_vocabulary(_package_text) | _POLITE  # ("alrght": politeness `spelt_word` respells too)
 
 
 def declared_vocabulary(read: Callable[[str], str]) -> frozenset[str]:
