@@ -41,9 +41,11 @@ def test_a_listed_sign_off_with_its_name_is_dropped():
 
 
 @pytest.mark.data
-def test_a_name_alone_mid_message_is_still_refused():
+def test_a_name_alone_mid_message_is_still_refused_and_one_closing_the_message_is_frame():
     tasks, unread, _ = read("Put the egg in the fridge. Bo. Put the mug in the sink.")
     assert any("'Bo' (words)" in u for u in unread)
+    tasks, unread, assumed = read(f"{REQUEST} Bo")
+    assert tasks == READ and unread == [] and "'Bo'" in " ".join(assumed)
 
 
 @pytest.mark.data
