@@ -5,9 +5,18 @@ negation word."""
 
 from __future__ import annotations
 
+from importlib import resources
+
 import pytest
 
-from nl2hltl2plan.language.spelling import respelling_notes, respelt, vocabulary_near, vocabulary_words
+from nl2hltl2plan.language.spelling import (
+    VOCABULARY_FILE,
+    declared_vocabulary,
+    respelling_notes,
+    respelt,
+    vocabulary_near,
+    vocabulary_words,
+)
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.language.unknown_words import misspelt_words, unread_words
 
@@ -46,7 +55,7 @@ def test_a_tie_or_an_order_word_without_its_margin_is_left_as_written(typed, nea
 
 def test_the_vocabulary_is_the_word_files_words_not_their_comments():
     words = vocabulary_words()
-    assert {"which", "before", "newspaper", "apple", "never"} <= words
+    assert {"which", "before", "newspaper", "apple", "never", "two", "dozen"} <= words
     assert "recognised" not in words  # content_words.txt's header comment
     assert "sinkbasin" not in words and "bathtubbasin" not in words  # a type's name, not a word said
 
@@ -76,3 +85,31 @@ def test_the_result_says_what_was_respelt():
     assert read == [(["Mug"], ["SinkBasin"]), (["Bread"], ["Fridge"])]
     assert res.before == [("A", "B")] and not res.unparsed
     assert res.assumptions == ["read 'whih' as 'which'"]
+
+
+def _package_text(name: str) -> str:
+    return resources.files("nl2hltl2plan.language").joinpath(*name.split("/")).read_text()
+
+
+def test_a_word_added_to_a_frame_list_changes_no_respelling():
+    """Only the declared word files make the vocabulary (h289): "since" added to the frame remarks' days
+    (session 33) or a word to the courtesy list leaves it as it was; one added to the order words is in it."""
+    added = {"frame_remarks.txt": "day: since\n", "courtesy.txt": "greeting: zorbleth\n"}
+
+    def read(name: str) -> str:
+        return _package_text(name) + added.get(name, "")
+
+    declared = declared_vocabulary(_package_text)
+    assert declared_vocabulary(read) == declared and declared <= vocabulary_words()
+    assert "since" not in vocabulary_words() and "courtesy.txt" not in _package_text(VOCABULARY_FILE)
+    order = {"content_words.txt": "order: zorbleth\n"}
+    ordered = declared_vocabulary(lambda name: _package_text(name) + order.get(name, ""))
+    assert ordered == declared | {"zorbleth"}
+
+
+@pytest.mark.parametrize(
+    "typed, word",
+    [("micorwave", "microwave"), ("aple", "apple"), ("befoe", "before"), ("whih", "which"), ("thwo", "two")],
+)
+def test_typos_of_lexicon_words_and_connectives_are_still_respelt(typed, word):
+    assert respelt(f"put the mug in the sink {typed} now").split()[-2] == word

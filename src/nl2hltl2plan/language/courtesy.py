@@ -225,9 +225,12 @@ _CALL_OPENING = re.compile(
 )
 # a note's heading naming who it is for ("Note for Sam:", "Note for whoever's home first:"), `_NOTE_HEADING`
 _NOTE_FOR = re.compile(rf"{_OPENS}{_NOTE_HEADING}(?=\S)", re.I)
-# (a name may come with a title: "Fondly, Aunt Jo")
+# (a name may come with a title: "Fondly, Aunt Jo"; or after a closing thanks set off by a stop or a dash:
+# "Thanks!! Priya", "Thanks! - Priya")
 _SIGN_OFF = re.compile(
-    rf"(?<=[.!?])\s*(?i:{courtesy_pattern('sign_off')})\s*,\s*(?P<name>[A-Z][a-z]+(?:\s+[A-Z][a-z]+)?)\W*$"
+    rf"(?<=[.!?])\s*(?i:{courtesy_pattern('sign_off')}\s*,|"
+    rf"{courtesy_pattern('sign_off', 'closing')}\s*(?:[!.]+|[!.]*\s*[-\u2013\u2014]+))"
+    r"\s*(?P<name>[A-Z][a-z]+(?:\s+[A-Z][a-z]+)?)\W*$"
 )
 
 

@@ -25,7 +25,13 @@ import re
 
 from nl2hltl2plan.language.frame_filler import Dropped
 from nl2hltl2plan.language.frame_remarks import references_in_full, scene_remark
-from nl2hltl2plan.language.handover_discourse import frame_gone, heads_dropped, tails_dropped
+from nl2hltl2plan.language.handover_discourse import (
+    frame_gone,
+    heads_dropped,
+    tails_dropped,
+    unsigned,
+    writer_name,
+)
 from nl2hltl2plan.language.request_times import timed_frame, times_dropped
 
 _SENTENCE_END = re.compile(r"(?<=[A-Za-z][.!?])\s+")  # not after a list's number ("1. Carrot ...")
@@ -47,6 +53,16 @@ def frames_dropped(
     seen = Dropped(dropped, names, only_general=True)
     # (the household's references, "Recipe card no. 7", "p. 14": said in full, h279)
     sentences = _SENTENCE_END.split((references_in_full(text) if times else text).strip())
+    # "Night, Bo": a sign-off and its writer's name, both (said after what the sentences before drop)
+    signed: list[str] | None = None if dropped is None else []
+    sentences = unsigned(sentences, seen._replace(dropped=signed))
+    # a word alone closing the message ("... plate. Namaste.", "... GG.", "... lamp. Bo"): a sign-off or its
+    # writer's name, no word a reader knows (mid-message, a name alone may be a command's object: it stays)
+    word = sentences[-1].strip(" .!") if len(sentences) > 1 else ""
+    if word[:1].isupper() and word.isalpha() and writer_name(word.capitalize(), names):
+        sentences.pop()
+        if signed is not None:
+            signed.append(word)
     kind = _NUMBERED.match(sentences[0]) if sentences else None
     again = kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[kind.end() :], re.IGNORECASE)
     out = []
@@ -69,4 +85,6 @@ def frames_dropped(
             continue  # what is left of it is frame too ("Campers, gather round!": "gather round!")
         end = sentence.rstrip()[-1:]
         out.append(said + end if end in ".!?" and not said.endswith(end) else said)
+    if dropped is not None and signed:
+        dropped.extend(signed)
     return " ".join(s for s in out if s)

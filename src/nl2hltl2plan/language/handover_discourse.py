@@ -367,7 +367,7 @@ _RELAYED = re.compile(
 
 def _unrelayed(sentence: str) -> str:
     relayed = _RELAYED.match(sentence)
-    if relayed is None or (relayed["name"] and not _name(relayed["name"])):
+    if relayed is None or (relayed["name"] and not writer_name(relayed["name"])):
         return sentence
     return ("do not " if relayed["not"] else "") + sentence[relayed.end() :]
 
@@ -378,7 +378,7 @@ _ASIDE = re.compile(rf"(?i)^\s*(?:{'|'.join(sorted(frame_words()['aside']))})\b[
 
 def _called(fragment: str) -> bool:
     called = _CALL_WORD.match(fragment)
-    return called is not None and _name(called[1])
+    return called is not None and writer_name(called[1])
 
 
 _INNER = re.compile(r",\s*([^,:;]{1,40}?)\s*(?=,)")
@@ -510,26 +510,32 @@ def unreported(sentence: str) -> str:
     return sentence
 
 
-# a writer's name: one capitalised word that the reader reads as nothing ("Ana"; not "Red", not "Arm"), or a
-# team's ("The Robotics Team", "Support Desk")
-_NAME = re.compile(r"^\s*(?-i:(?:The\s+)?[A-Z][a-z]+(?:\s+(?:Team|Crew|Group|Desk))?)\s*[.!]*\s*$")
+# a writer's name: one or two capitalised words that the reader reads as nothing ("Ana", "Mr Okafor"; not
+# "Red", not "Arm"), a team's ("The Robotics Team", "Support Desk"), after a dash at most ("- Priya")
+_NAME = re.compile(r"^\s*[-\u2013\u2014~]*\s*(?-i:(?:The\s+)?[A-Z][a-z]+(?:\s+[A-Z][a-z]+)?)\s*[.!]*\s*$")
 
 
-def _name(text: str) -> bool:
-    word = text.strip(" .!").lower()
-    known = MEANING.search(word) or _ACTION.search(word) or _content_word(word)
-    return bool(_NAME.match(text)) and not known
+def writer_name(text: str, names: frozenset[str] = frozenset()) -> bool:
+    """Whether no word of the name `text` is a block, place, action, content word or thing (`names`)."""
+    words = re.findall(r"[a-z]+", text.lower())
+    known = (MEANING.search(w) or _ACTION.search(w) or _content_word(w) or w in names for w in words)
+    return bool(_NAME.match(text)) and not any(known)
 
 
-def _unsigned(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
-    """The sentences without the writer's name that signs the empty sign-off ending them: "Best, Ana", or
-    "Thanks," and then "Ana" on a line of its own."""
-    if len(sentences) > 1 and _name(sentences[-1]) and empty(sentences[-2], whole=True):
-        return sentences[:-1]
+def unsigned(sentences: list[str], seen: Dropped = _NOTHING_SEEN) -> list[str]:
+    """The sentences without the sign-off and writer's name ending them: "Best, Ana", "Night, Bo", "Night,
+    Mr Okafor" (the sign-off found empty by `frame_gone`), or "Thanks!" and then "- Priya". A sign-off only
+    the general filler rule drops goes to `seen.dropped` with its name ("Night, Bo"); a thing's name
+    (`seen.names`: "Night, Mug") is no writer's. Every reader's frame rule (`plain`, `frames_dropped`)."""
     signed = re.fullmatch(r"(.+),([^,]+)", sentences[-1]) if sentences else None
-    if signed and _name(signed[2]) and frame_gone(signed[1], Dropped(dropped)):
-        return sentences[:-1]
-    return sentences
+    alone = len(sentences) > 1 and writer_name(sentences[-1], seen.names)
+    if alone and empty(sentences[-2], whole=True):
+        if seen.dropped is not None and not empty(sentences[-2], whole=True, general=False):
+            seen.dropped.append(sentences[-1].strip(" -\u2013\u2014~.!"))  # the name of "Night. Bo"
+    elif not (signed and writer_name(signed[2], seen.names)
+              and frame_gone(signed[1], seen, shown=sentences[-1], edge=True, outer=True)):
+        return sentences
+    return sentences[:-1]
 
 
 # a start signal said as a whole sentence ("Go.", "Go ahead!", "Begin.", "Proceed.", a coach's "Move!"): when
@@ -579,7 +585,7 @@ def plain(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
     first-person narration said as the team's commands (see the module docstring); what only the general
     filler rule dropped is added to `dropped`, where given."""
     out = []
-    sentences = _unsigned(sentences, dropped)
+    sentences = unsigned(sentences, Dropped(dropped))
     edges = _voice_edges(sentences)
     for k, sentence in enumerate(sentences):
         framed = frame_gone(sentence, Dropped(dropped), whole=True, header=k == 0, voice=k in edges)

@@ -15,8 +15,9 @@ text, so a misspelt name that a reading does not use is named, never passed over
 - an order word only where it is the one English word one edit away ("befoer", "lastyl"; no swap
   preference: "thne" may be "the"): a guessed order word would guess its scope. One left as written is
   named by check 1 (`unknown_words.misspelt_order_words`), never read as if absent.
-- any other word of four letters or more that no list and no English knows is the word of the package's
-  vocabulary (its word files' words) that one slip makes it, where exactly one does ("whih", "aple",
+- any other word of four letters or more that no list and no English knows is the word of the respelling
+  vocabulary (the names, verbs and structure words of the word files `respelling_vocabulary.txt` declares:
+  a frame list's words are none of them) that one slip makes it, where exactly one does ("whih", "aple",
   "newspaaper"; an order, count or negation word by a margin over English's other near words, `MARGIN`);
   each respelling is said in the result's assumptions (`respelling_notes`: "read 'whih' as 'which'").
 A world with a closed vocabulary may ask for more (`closed_respelt`): the tabletop world respells against
@@ -38,6 +39,7 @@ from __future__ import annotations
 
 import difflib
 import re
+from collections.abc import Callable
 from functools import cache, lru_cache
 from importlib import resources
 
@@ -318,18 +320,18 @@ def _neighbours_swapped(a: str, b: str) -> bool:
     return len(at) == 2 and at[1] == at[0] + 1
 
 
-# --- a misspelt word of the package's vocabulary (issue 28) ----------------------------------------------
+# --- a misspelt word of the respelling vocabulary (issue 28) ---------------------------------------------
 # "whih", "befoe", "newspaaper", "aple": a word no list and no English knows that one slip (a letter left out,
 # one added, one replaced by its keyboard neighbour, two neighbours swapped, a letter doubled) makes from
-# exactly one word of the vocabulary, the words of the package's word files. An order, count or negation
-# word needs a margin too: English knows no other word one edit away at more than 1/MARGIN of its frequency
-# ("befoe" is "before", 30,000 times as common as "befog"; "firt" may be "first" or "fire", which is only 6
-# times rarer). A tie, or a margin not met, leaves the word as written, and check 1 names it
-# (`unknown_words.misspelt_words`).
+# exactly one word of the vocabulary, the words of the word files `respelling_vocabulary.txt` declares (the
+# names, verbs and structure words a reading uses; h289). An order, count or negation word needs a margin
+# too: English knows no other word one edit away at more than 1/MARGIN of its frequency ("befoe" is
+# "before", 30,000 times as common as "befog"; "firt" may be "first" or "fire", only 6 times rarer).
+# A tie, or a margin not met, leaves the word as written; check 1 names it (`unknown_words.misspelt_words`).
 MARGIN = 20
 _QWERTY = ("qwertyuiop", "asdfghjkl", "zxcvbnm")
 _STRUCTURE = ("order", "any_order", "negation", "quantifier_all", "quantifier_vague", "repetition")
-_LABEL = re.compile(r"^[a-z_]+:\s")  # "order: ...", the category a word file's line gives
+_LABEL = re.compile(r"^([a-z_0-9]+):\s")  # "order: ...", "count_2: ...": the kind a word file's line gives
 _LOWER_WORD = re.compile(r"(?<![A-Za-z])[a-z]{3,}(?![A-Za-z])")  # not "KeyChain", a type's name
 
 
@@ -343,17 +345,39 @@ def _keyboard() -> dict[str, frozenset[str]]:
             for c, (r, i) in at.items()}
 
 
+VOCABULARY_FILE = "respelling_vocabulary.txt"  # the one declaration of the word files respelt to
+
+
 @cache
 def vocabulary_words() -> frozenset[str]:
-    """The words of the package's word files (the lexicon's names, the verbs, order, count and negation
-    words, the function words of the phrase files), three letters or more, their comments left out."""
-    files = [f for f in resources.files("nl2hltl2plan.language").iterdir() if f.name.endswith(".txt")]
+    """The respelling vocabulary: the words of the word files `respelling_vocabulary.txt` declares (the
+    lexicon's names, the verbs, order, count and negation words, the connectives the grammar reads),
+    three letters or more, their comments left out; never a word of any other list (h289)."""
+    return declared_vocabulary(_package_text) | _POLITE  # ("alrght": politeness `spelt_word` respells too)
+
+
+def declared_vocabulary(read: Callable[[str], str]) -> frozenset[str]:
+    """The words of the word files `respelling_vocabulary.txt` declares, each file read by `read` (its path in
+    the package -> its text): a line `file` takes every entry of the file, `file: kind kind` those of the
+    kinds named."""
     words: set[str] = set()
-    for f in files:
-        for line in f.read_text().splitlines():
-            if not line.lstrip().startswith("#"):
-                words.update(_LOWER_WORD.findall(_LABEL.sub("", line)))
+    for source in _entries(read(VOCABULARY_FILE)):
+        name, _, kinds = source.partition(":")
+        wanted = frozenset(kinds.split())
+        for line in _entries(read(name.strip())):
+            label = _LABEL.match(line)
+            if not wanted or label and label[1] in wanted:
+                words.update(_LOWER_WORD.findall(line[label.end() if label else 0 :]))
     return frozenset(words)
+
+
+def _entries(text: str) -> list[str]:
+    """A word file's lines, its comments and blank lines left out."""
+    return [line for line in text.splitlines() if line.strip() and not line.lstrip().startswith("#")]
+
+
+def _package_text(name: str) -> str:
+    return resources.files("nl2hltl2plan.language").joinpath(*name.split("/")).read_text()
 
 
 def _one_slip(typed: str, word: str) -> bool:

@@ -448,23 +448,6 @@ FOREIGN_REASON = (
 _SENTENCE_PART = re.compile(r"[^.!?;,\n]+")  # (not at a colon: "[10:02] Kai: ..." labels its line)
 
 
-def _signed(instruction: str, part: re.Match[str]) -> bool:
-    """Whether the part is one capitalised name after a comma that ends English words in its sentence, or
-    alone at the end after a sentence: a sign-off's or greeting's name ("Night, Bo", "Thanks, Nana", a
-    closing "... lamp. Bo" once the frame rule has dropped the "Night,"), which names no thing or action."""
-    name = part[0].strip()
-    before = instruction[: part.start()].rstrip()
-    if not (name[:1].isupper() and name.isalpha()):
-        return False
-    if before.endswith((".", "!")) and not instruction[part.end() :].strip(" .!"):
-        return True
-    if not before.endswith(","):
-        return False
-    said = re.split(r"[.!?;\n]", before[:-1])[-1]
-    words = re.findall(r"[a-z]+", said.lower())
-    return bool(words) and all(english_word(w) for w in words)
-
-
 def foreign_sentences(instruction: str) -> list[Unread]:
     """A sentence (or a part set off by a comma) in which no word is one the reader's lists know
     and some word no list of English knows ("Rien ne va plus.", "Zorblax quing."): it was read as nothing,
@@ -474,7 +457,7 @@ def foreign_sentences(instruction: str) -> list[Unread]:
     out = []
     for m in _SENTENCE_PART.finditer(instruction):
         words = re.findall(r"[a-z]+", m[0].lower())
-        if not words or any(known_word(w) or categories(w) for w in words) or _signed(instruction, m):
+        if not words or any(known_word(w) or categories(w) for w in words):
             continue
         if any(not english_word(w) for w in words):
             out.append(Unread(" ".join(m[0].split()), "words", FOREIGN_REASON))
