@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import re
 
+from nl2hltl2plan.language.content_words import categories
 from nl2hltl2plan.language.frame_filler import Dropped
 from nl2hltl2plan.language.frame_remarks import references_in_full, scene_remark
 from nl2hltl2plan.language.handover_discourse import (
@@ -33,6 +34,7 @@ from nl2hltl2plan.language.handover_discourse import (
     writer_name,
 )
 from nl2hltl2plan.language.request_times import timed_frame, times_dropped
+from nl2hltl2plan.language.spelling import english_word, known_word
 
 _SENTENCE_END = re.compile(r"(?<=[A-Za-z][.!?])\s+")  # not after a list's number ("1. Carrot ...")
 # a record's kind and number opening the text ("Level 1:", "Cabin 4,"): a header unless the kind numbers
@@ -57,9 +59,12 @@ def frames_dropped(
     signed: list[str] | None = None if dropped is None else []
     sentences = unsigned(sentences, seen._replace(dropped=signed))
     # a word alone closing the message ("... plate. Namaste.", "... GG.", "... lamp. Bo"): a sign-off or its
-    # writer's name, no word a reader knows (mid-message, a name alone may be a command's object: it stays)
+    # writer's name, no word a reader or English knows (mid-message, a name alone may be a command's object:
+    # it stays; an English word, "Sequentially.", "Pause.", "Matters.", may say something: it stays too)
     word = sentences[-1].strip(" .!") if len(sentences) > 1 else ""
-    if word[:1].isupper() and word.isalpha() and writer_name(word.capitalize(), names):
+    low = word.lower()
+    known = known_word(low) or bool(categories(low)) or english_word(low)
+    if word[:1].isupper() and word.isalpha() and not known and writer_name(word.capitalize(), names):
         sentences.pop()
         if signed is not None:
             signed.append(word)
