@@ -85,6 +85,30 @@ _UNSEEN_INSTRUCTION = re.compile(
     rf"\b(?:(?:the\s+)?same\s+as\s+{_PAST}|(?:just\s+)?like\s+{_PAST}|as\s+(?:usual|always|last\s+time|yesterday)"
     r"|the\s+usual|(?:do|repeat)\s+(?:that|the\s+same)\s+again|what\s+you\s+did\s+(?:yesterday|last\s+time))\b"
 )
+# "in its own cabinet", "one per drawer", "in separate drawers", "on a different armchair": a place for each
+# thing, while a base task names a kind of place, never which one (h297); the place must be a thing of the
+# world, so the tabletop's "its own region" (no household mention) is left to its reader
+_EACH_ITS_OWN = re.compile(
+    r"\b(?:(?:in|into|on|onto|inside|to)\s+(?:(?:its|their|his|her)\s+own|(?:an?\s+|the\s+)?(?:separate|different|"
+    r"distinct|individual))|per|apiece\s+(?:in|on))\s+"
+)
+_EACH_ITS_OWN_WHY = "a place for each thing: a base task names a kind of place, never which one; say each task"
+# "have the second robot put ...", "robot one should ...", "ask the other robot to ...": a task given to one
+# robot, while the planner shares the tasks among the robots itself (h297)
+_ONE_ROBOT = re.compile(
+    r"\b(?:(?:the|a|an|your)\s+(?:first|second|third|fourth|other|another|left|right|\w+est|next)\s+(?:robot|bot)\b"
+    r"|another\s+(?:robot|bot)\b|(?:robot|bot)\s+(?:one|two|three|four|no\.?\s*\d+|#?\d+)\b"
+    r"|(?:one|each|either|both|neither|all)\s+of\s+(?:the\s+|you\s+)?(?:robots|bots))"
+)
+_ONE_ROBOT_WHY = "a task given to one robot: the planner shares the tasks among the robots itself; drop the name"
+# "between putting the apple in the fridge and putting the bread on the counter, put the mug in the sink":
+# a task said between two others, which no order rule reads (h297),
+# or "A and B, and between those, C"; "between the lamps" is a place
+_BETWEEN_TASKS = re.compile(
+    r"\b(?:in\s+)?between\s+(?:\w+ing|(?:those|these|them|both|the\s+two)(?=\s*[,.;:]|\s+(?:tasks|jobs|steps)\b)"
+    r"|the\s+\w+\s+(?:task|job|step)s?)\b|\bin\s+between\b(?=\s*[,.;:])"
+)
+_BETWEEN_WHY = "a task between two others: say 'after A, do C, then B'"
 # "is the apple in the fridge", "what is in the fridge", "which plate should it go on?"; not "what I need
 # is ...", a need said as a pseudo-cleft
 _QUESTION = re.compile(
@@ -150,6 +174,14 @@ def vague_words(instruction: str, mentions: list[Mention], chosen: bool = False)
         if m["who"].split()[0] not in _DOERS
         and not any(m.start("who") <= x.char_start < m.end("who") for x in mentions)
     ]
+    out += [
+        Unread(lowered[m.start() : named.char_end].strip(), "place", _EACH_ITS_OWN_WHY)
+        for m in _EACH_ITS_OWN.finditer(lowered)
+        for named in [next((x for x in mentions if x.char_start == m.end()), None)]
+        if named is not None
+    ]
+    out += [Unread(m[0], "action", _ONE_ROBOT_WHY) for m in _ONE_ROBOT.finditer(lowered)]
+    out += [Unread(m[0], "order", _BETWEEN_WHY) for m in _BETWEEN_TASKS.finditer(lowered)]
     return out + [
         Unread(m.group(0), "condition", "no base task waits on a state: say what to do")
         for m in _STATE_CONDITION.finditer(lowered)

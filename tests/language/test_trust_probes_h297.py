@@ -1,0 +1,89 @@
+"""Red-team probes of classes no red team had tried (issue 23, h297), through `plan` and the public reading path.
+
+Each case was read at exit 0 with part of the text dropped before h297:
+- a place for each thing ("each of the three mugs in its own cabinet", "in separate drawers", "one per
+  drawer"): the task named the kind of place and dropped the "each its own";
+- a task given to one robot ("have the second robot put ...", "robot 2 should ..."): the name was dropped;
+- a task said between two others ("between putting A ... and putting B ..., C"; "A and B, and between
+  those, C"): the order was dropped (a frame rule dropped "and between those" as a filler).
+The near misses beside them must read as before. The many-case tables are trust/redteam_h297dev/held.txt
+(`scripts/trust_sets.py measure --sets redteam_h297dev,redteam_h297held`)."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+from nl2hltl2plan.cli.main import main
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.language.translate import translate
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+
+
+def read(text: str, scene: str) -> tuple[list[str], list[str], list[tuple[str, str]]] | str:
+    """(the tasks' summaries, what is left unread, the order), or "refused"."""
+    from trust_sets import world_of
+
+    try:
+        res = translate(text, world_of(scene), build=False, actions="none")
+    except Nl2Hltl2PlanError:
+        return "refused"
+    return [t.summary() for t in res.tasks], res.unparsed, list(res.before)
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "text, scene, named",
+    [
+        ("put each of the three mugs in its own cabinet", "FloorPlan3", "'in its own cabinet' (place)"),
+        ("have the second robot put the laptop on the bed", "FloorPlan309", "'the second robot' (action)"),
+        (
+            "put the egg in the fridge and the mug in the sink, and between those, put the bread on the counter",
+            "FloorPlan17",
+            "'between those' (order)",
+        ),
+    ],
+)
+def test_plan_refuses_what_it_dropped_naming_it(
+    text: str, scene: str, named: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    assert main(["plan", text, "--world", scene]) == 2
+    assert named in capsys.readouterr().err
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "text, scene, named",
+    [
+        ("put the keys and the phone in separate drawers", "FloorPlan218", "'in separate drawers' (place)"),
+        ("put the two pillows on different armchairs", "FloorPlan309", "'on different armchairs' (place)"),
+        ("let robot 2 put the egg in the fridge", "FloorPlan17", "'robot 2' (action)"),
+        (
+            "between putting the apple in the fridge and putting the bread on the counter, put the mug in the sink",
+            "FloorPlan17",
+            "'between putting' (order)",
+        ),
+    ],
+)
+def test_translate_names_the_dropped_words(text: str, scene: str, named: str) -> None:
+    got = read(text, scene)
+    assert got == "refused" or any(named in u for u in got[1]), got
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "text, scene, tasks, before",
+    [
+        # the near misses: a thing's own container, a robot not singled out, an order said plainly
+        ("put the credit card in its box on the coffee table", "FloorPlan210", 1, []),
+        ("tell the robot: put the two mugs in the cabinet", "FloorPlan3", 1, []),
+        ("put the egg in the fridge, then put the bread on the counter", "FloorPlan17", 2, [("A", "B")]),
+    ],
+)
+def test_near_misses_read_as_before(text: str, scene: str, tasks: int, before: list[tuple[str, str]]) -> None:
+    got = read(text, scene)
+    assert got != "refused" and not got[1], got
+    assert len(got[0]) == tasks and got[2] == before
