@@ -1,4 +1,4 @@
-"""Red-team probes of classes no red team had tried (issue 23, h297), through `plan` and the public reading path.
+"""Red-team probes of classes no red team had tried (issue 23, h297), through `plan` and `translate`.
 
 Each case was read at exit 0 with part of the text dropped before h297:
 - a place for each thing ("each of the three mugs in its own cabinet", "in separate drawers", "one per
@@ -41,7 +41,8 @@ def read(text: str, scene: str) -> tuple[list[str], list[str], list[tuple[str, s
         ("put each of the three mugs in its own cabinet", "FloorPlan3", "'in its own cabinet' (place)"),
         ("have the second robot put the laptop on the bed", "FloorPlan309", "'the second robot' (action)"),
         (
-            "put the egg in the fridge and the mug in the sink, and between those, put the bread on the counter",
+            "put the egg in the fridge and the mug in the sink, and between those, put the bread on the "
+            "counter",
             "FloorPlan17",
             "'between those' (order)",
         ),
@@ -60,9 +61,13 @@ def test_plan_refuses_what_it_dropped_naming_it(
     [
         ("put the keys and the phone in separate drawers", "FloorPlan218", "'in separate drawers' (place)"),
         ("put the two pillows on different armchairs", "FloorPlan309", "'on different armchairs' (place)"),
+        ("put each pencil into a drawer of its own", "FloorPlan309", "'drawer of its own' (place)"),
+        ("the robot on the left should put the mug on the desk", "FloorPlan309", "'robot on the left'"),
+        ("in the middle of heating the egg, put the bread on the counter", "FloorPlan17", "'in the middle"),
         ("let robot 2 put the egg in the fridge", "FloorPlan17", "'robot 2' (action)"),
         (
-            "between putting the apple in the fridge and putting the bread on the counter, put the mug in the sink",
+            "between putting the apple in the fridge and putting the bread on the counter, put the mug in "
+            "the sink",
             "FloorPlan17",
             "'between putting' (order)",
         ),

@@ -89,26 +89,29 @@ _UNSEEN_INSTRUCTION = re.compile(
 # thing, while a base task names a kind of place, never which one (h297); the place must be a thing of the
 # world, so the tabletop's "its own region" (no household mention) is left to its reader
 _EACH_ITS_OWN = re.compile(
-    r"\b(?:(?:in|into|on|onto|inside|to)\s+(?:(?:its|their|his|her)\s+own|(?:an?\s+|the\s+)?(?:separate|different|"
-    r"distinct|individual))|per|apiece\s+(?:in|on))\s+"
+    r"\b(?:(?:in|into|on|onto|inside|to)\s+(?:(?:its|their|his|her)\s+own|(?:an?\s+|the\s+|two\s+|three\s+|\d+\s+)?"
+    r"(?:separate|different|distinct|individual))|per|apiece\s+(?:in|on))\s+"
 )
-_EACH_ITS_OWN_WHY = "a place for each thing: a base task names a kind of place, never which one; say each task"
-# "have the second robot put ...", "robot one should ...", "ask the other robot to ...": a task given to one
+_OF_ITS_OWN = re.compile(r"\s+of\s+(?:its|their|his|her)\s+own\b")  # "into a drawer of its own"
+_EACH_ITS_OWN_WHY = "a place for each thing: a base task names a kind of place, never which one"
+# "have the second robot put ...", "robot one should ...", "the robot on the left ...": a task given to one
 # robot, while the planner shares the tasks among the robots itself (h297)
 _ONE_ROBOT = re.compile(
     r"\b(?:(?:the|a|an|your)\s+(?:first|second|third|fourth|other|another|left|right|\w+est|next)\s+(?:robot|bot)\b"
     r"|another\s+(?:robot|bot)\b|(?:robot|bot)\s+(?:one|two|three|four|no\.?\s*\d+|#?\d+)\b"
-    r"|(?:one|each|either|both|neither|all)\s+of\s+(?:the\s+|you\s+)?(?:robots|bots))"
+    r"|(?:one|each|either|both|neither|all)\s+of\s+(?:the\s+|you\s+)?(?:robots|bots)"
+    r"|(?:robot|bot)\s+(?:on\s+the\s+(?:left|right)|nearest|closest)\b)"
 )
-_ONE_ROBOT_WHY = "a task given to one robot: the planner shares the tasks among the robots itself; drop the name"
+_ONE_ROBOT_WHY = "a task given to one robot: the planner shares the tasks among the robots itself"
 # "between putting the apple in the fridge and putting the bread on the counter, put the mug in the sink":
-# a task said between two others, which no order rule reads (h297),
-# or "A and B, and between those, C"; "between the lamps" is a place
+# a task said between two others, which no order rule reads (h297), or "A and B, and between those, C",
+# "halfway through that, C"; "between the lamps" is a place
 _BETWEEN_TASKS = re.compile(
     r"\b(?:in\s+)?between\s+(?:\w+ing|(?:those|these|them|both|the\s+two)(?=\s*[,.;:]|\s+(?:tasks|jobs|steps)\b)"
     r"|the\s+\w+\s+(?:task|job|step)s?)\b|\bin\s+between\b(?=\s*[,.;:])"
+    r"|\b(?:halfway|midway|partway)\s+through\b|\bin\s+the\s+middle\s+of\s+(?:that|this|it|\w+ing)\b"
 )
-_BETWEEN_WHY = "a task between two others: say 'after A, do C, then B'"
+_BETWEEN_WHY = "a task said between or during others, which no order rule reads: say 'after A, do C, then B'"
 # "is the apple in the fridge", "what is in the fridge", "which plate should it go on?"; not "what I need
 # is ...", a need said as a pseudo-cleft
 _QUESTION = re.compile(
@@ -178,6 +181,12 @@ def vague_words(instruction: str, mentions: list[Mention], chosen: bool = False)
         Unread(lowered[m.start() : named.char_end].strip(), "place", _EACH_ITS_OWN_WHY)
         for m in _EACH_ITS_OWN.finditer(lowered)
         for named in [next((x for x in mentions if x.char_start == m.end()), None)]
+        if named is not None
+    ]
+    out += [
+        Unread(lowered[named.char_start : m.end()], "place", _EACH_ITS_OWN_WHY)
+        for m in _OF_ITS_OWN.finditer(lowered)
+        for named in [next((x for x in mentions if x.char_end == m.start()), None)]
         if named is not None
     ]
     out += [Unread(m[0], "action", _ONE_ROBOT_WHY) for m in _ONE_ROBOT.finditer(lowered)]
