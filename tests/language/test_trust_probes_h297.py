@@ -5,7 +5,11 @@ Each case was read at exit 0 with part of the text dropped before h297:
   drawer"): the task named the kind of place and dropped the "each its own";
 - a task given to one robot ("have the second robot put ...", "robot 2 should ..."): the name was dropped;
 - a task said between two others ("between putting A ... and putting B ..., C"; "A and B, and between
-  those, C"): the order was dropped (a frame rule dropped "and between those" as a filler).
+  those, C"): the order was dropped (a frame rule dropped "and between those" as a filler);
+- a place to fall back on ("put the apple in the fridge, failing that / else / as a fallback the
+  counter"): read as a cooled apple on the counter;
+- a place not wanted ("on the desk rather than on the bed", "instead of on the bed", "in place of the
+  bed"): read as the task's place (on the bed).
 The near misses beside them must read as before. The many-case tables are trust/redteam_h297dev/held.txt
 (`scripts/trust_sets.py measure --sets redteam_h297dev,redteam_h297held`)."""
 
@@ -40,6 +44,7 @@ def read(text: str, scene: str) -> tuple[list[str], list[str], list[tuple[str, s
     [
         ("put each of the three mugs in its own cabinet", "FloorPlan3", "'in its own cabinet' (place)"),
         ("have the second robot put the laptop on the bed", "FloorPlan309", "'the second robot' (action)"),
+        ("put the apple in the fridge, failing that the counter", "FloorPlan24", "'failing that'"),
         (
             "put the egg in the fridge and the mug in the sink, and between those, put the bread on the "
             "counter",
@@ -65,6 +70,7 @@ def test_plan_refuses_what_it_dropped_naming_it(
         ("the robot on the left should put the mug on the desk", "FloorPlan309", "'robot on the left'"),
         ("in the middle of heating the egg, put the bread on the counter", "FloorPlan17", "'in the middle"),
         ("let robot 2 put the egg in the fridge", "FloorPlan17", "'robot 2' (action)"),
+        ("put the apple in the fridge, or the counter as a backup", "FloorPlan24", "'as a backup'"),
         (
             "between putting the apple in the fridge and putting the bread on the counter, put the mug in "
             "the sink",
@@ -92,3 +98,17 @@ def test_near_misses_read_as_before(text: str, scene: str, tasks: int, before: l
     got = read(text, scene)
     assert got != "refused" and not got[1], got
     assert len(got[0]) == tasks and got[2] == before
+
+
+@pytest.mark.data
+@pytest.mark.parametrize(
+    "text",
+    [
+        "put the book on the desk rather than on the bed",
+        "put the book on the desk instead of on the bed",
+        "put the book on the desk in place of the bed",
+    ],
+)
+def test_a_place_not_wanted_is_not_the_tasks(text: str) -> None:
+    """The place after "rather than / instead of" was the task's (place Book -> Bed, exit 0)."""
+    assert read(text, "FloorPlan309") == (["place Book -> Desk"], [], [])

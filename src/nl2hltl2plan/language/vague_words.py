@@ -112,6 +112,13 @@ _BETWEEN_TASKS = re.compile(
     r"|\b(?:halfway|midway|partway)\s+through\b|\bin\s+the\s+middle\s+of\s+(?:that|this|it|\w+ing)\b"
 )
 _BETWEEN_WHY = "a task said between or during others, which no order rule reads: say 'after A, do C, then B'"
+# "put the apple in the fridge, failing that the counter" / ", else the counter" / ", as a backup ...": a
+# place to fall back on, which the grammar read as a cooled apple on the counter (exit 0, h297); no base
+# task tries one place and then another ("anything else", "somewhere else" are no fallback)
+_FALLBACK = re.compile(
+    r"\b(?:failing\s+(?:that|this|which|it)|as\s+a\s+(?:fallback|backup|last\s+resort)|if\s+(?:that|this|it)\s+"
+    r"(?:fails|doesn't\s+work|does\s+not\s+work|won't\s+work)|plan\s+b)\b|(?:,\s*|\bor\s+)else\b(?!\s+(?:do|to)\b)"
+)
 # "is the apple in the fridge", "what is in the fridge", "which plate should it go on?"; not "what I need
 # is ...", a need said as a pseudo-cleft
 _QUESTION = re.compile(
@@ -191,6 +198,8 @@ def vague_words(instruction: str, mentions: list[Mention], chosen: bool = False)
     ]
     out += [Unread(m[0], "action", _ONE_ROBOT_WHY) for m in _ONE_ROBOT.finditer(lowered)]
     out += [Unread(m[0], "order", _BETWEEN_WHY) for m in _BETWEEN_TASKS.finditer(lowered)]
+    fallback = "a place to fall back on: no base task tries one place and then another; say which"
+    out += [Unread(m[0].strip(" ,"), "condition", fallback) for m in _FALLBACK.finditer(lowered)]
     return out + [
         Unread(m.group(0), "condition", "no base task waits on a state: say what to do")
         for m in _STATE_CONDITION.finditer(lowered)
