@@ -9,7 +9,8 @@ Each case was read at exit 0 with part of the text dropped before h297:
 - a place to fall back on ("put the apple in the fridge, failing that / else / as a fallback the
   counter"): read as a cooled apple on the counter;
 - a place not wanted ("on the desk rather than on the bed", "instead of on the bed", "in place of the
-  bed"): read as the task's place (on the bed).
+  bed"): read as the task's place (on the bed);
+- a share of a plural ("three quarters of the eggs": every egg) and a habit ("the way you always do").
 The near misses beside them must read as before. The many-case tables are trust/redteam_h297dev/held.txt
 (`scripts/trust_sets.py measure --sets redteam_h297dev,redteam_h297held`)."""
 
@@ -70,6 +71,8 @@ def test_plan_refuses_what_it_dropped_naming_it(
         ("the robot on the left should put the mug on the desk", "FloorPlan309", "'robot on the left'"),
         ("in the middle of heating the egg, put the bread on the counter", "FloorPlan17", "'in the middle"),
         ("let robot 2 put the egg in the fridge", "FloorPlan17", "'robot 2' (action)"),
+        ("put three quarters of the eggs in the fridge", "FloorPlan17", "'three quarters of the eggs' (count)"),
+        ("put the apple in the fridge the way you always do", "FloorPlan24", "'the way you always do'"),
         ("put the apple in the fridge, or the counter as a backup", "FloorPlan24", "'as a backup'"),
         (
             "between putting the apple in the fridge and putting the bread on the counter, put the mug in "

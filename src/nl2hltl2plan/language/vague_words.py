@@ -11,8 +11,11 @@ from nl2hltl2plan.language.grounding import Mention, sentence_start
 from nl2hltl2plan.language.piece_words import unsure_pieces
 
 # "some apples", "half of the mugs", "every other mug", "the rest": how many is not said
+# "three quarters of the eggs", "a third of the apples", "50% of the mugs" too (read as every egg, h297)
 _VAGUE_AMOUNT = re.compile(
-    r"\b(?:some|most|half|every other|a (?:bunch|number|handful|lot) of|lots of|plenty of)\b(?: of)?"
+    r"\b(?:some|most|half|every other|a (?:bunch|number|handful|lot) of|lots of|plenty of"
+    r"|(?:a|one|two|three|four)\s+(?:quarters?|thirds?|fifths?)|\d+\s*(?:%|percent|per\s+cent))"
+    r"(?:\b|(?<=%))(?: of)?"
 )
 # "half the lettuce", "a quarter of an apple": a part of one thing, which no base task moves (a slice is a
 # task's own word: "a slice of lettuce")
@@ -81,8 +84,10 @@ _ORDER_TOPIC = re.compile(r"\b(?:order|ordering|sequence)\b")
 # system never saw, so what it asks is unknown and refused; "as before" / "like before" may point at an
 # earlier step of this same instruction (ALFRED's annotators write it so) and are not listed
 _PAST = r"(?:yesterday|last\s+(?:time|week|night)|the\s+other\s+day|usual|always)"
+# "the way you always do", "like you usually do" too (h297)
+_HABIT = r"(?:the\s+way|like|as)\s+(?:you|we)\s+(?:always|usually|normally|generally)\s+(?:do|did)(?:\s+it)?"
 _UNSEEN_INSTRUCTION = re.compile(
-    rf"\b(?:(?:the\s+)?same\s+as\s+{_PAST}|(?:just\s+)?like\s+{_PAST}|as\s+(?:usual|always|last\s+time|yesterday)"
+    rf"\b(?:(?:the\s+)?same\s+as\s+{_PAST}|(?:just\s+)?like\s+{_PAST}|{_HABIT}|as\s+(?:usual|always|last\s+time|yesterday)"
     r"|the\s+usual|(?:do|repeat)\s+(?:that|the\s+same)\s+again|what\s+you\s+did\s+(?:yesterday|last\s+time))\b"
 )
 # "in its own cabinet", "one per drawer", "in separate drawers", "on a different armchair": a place for each
