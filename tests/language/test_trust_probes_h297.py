@@ -71,7 +71,7 @@ def test_plan_refuses_what_it_dropped_naming_it(
         ("the robot on the left should put the mug on the desk", "FloorPlan309", "'robot on the left'"),
         ("in the middle of heating the egg, put the bread on the counter", "FloorPlan17", "'in the middle"),
         ("let robot 2 put the egg in the fridge", "FloorPlan17", "'robot 2' (action)"),
-        ("put three quarters of the eggs in the fridge", "FloorPlan17", "'three quarters of the eggs' (count)"),
+        ("put three quarters of the eggs in the fridge", "FloorPlan17", "'three quarters of the eggs'"),
         ("put the apple in the fridge the way you always do", "FloorPlan24", "'the way you always do'"),
         ("put the apple in the fridge, or the counter as a backup", "FloorPlan24", "'as a backup'"),
         (
