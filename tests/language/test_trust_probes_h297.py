@@ -10,7 +10,9 @@ Each case was read at exit 0 with part of the text dropped before h297:
   counter"): read as a cooled apple on the counter;
 - a place not wanted ("on the desk rather than on the bed", "instead of on the bed", "in place of the
   bed"): read as the task's place (on the bed);
-- a share of a plural ("three quarters of the eggs": every egg) and a habit ("the way you always do").
+- a share of a plural ("three quarters of the eggs": every egg) and a habit ("the way you always do");
+- after the held half's one scoring: "like we did earlier", "during the evening", "one more time", "after
+  every tomato goes in ...", "instead of the green one" (each read at exit 0 with the words dropped).
 The near misses beside them must read as before. The many-case tables are trust/redteam_h297dev/held.txt
 (`scripts/trust_sets.py measure --sets redteam_h297dev,redteam_h297held`)."""
 
@@ -73,6 +75,12 @@ def test_plan_refuses_what_it_dropped_naming_it(
         ("let robot 2 put the egg in the fridge", "FloorPlan17", "'robot 2' (action)"),
         ("put three quarters of the eggs in the fridge", "FloorPlan17", "'three quarters of the eggs'"),
         ("put the apple in the fridge the way you always do", "FloorPlan24", "'the way you always do'"),
+        # classes the held half showed (mended after its one scoring)
+        ("put the mug in the cabinet like we did earlier", "FloorPlan3", "'like we did earlier'"),
+        ("put the tomato in the fridge during the evening", "FloorPlan3", "'during the evening' (count)"),
+        ("put the mug in the sink one more time", "FloorPlan3", "'one more time' (count)"),
+        ("after every tomato goes in the fridge, put a mug in the sink", "FloorPlan3", "'after every"),
+        ("put the red mug in the cabinet instead of the green one", "FloorPlan3", "'instead of the green"),
         ("put the apple in the fridge, or the counter as a backup", "FloorPlan24", "'as a backup'"),
         (
             "between putting the apple in the fridge and putting the bread on the counter, put the mug in "
@@ -115,3 +123,14 @@ def test_near_misses_read_as_before(text: str, scene: str, tasks: int, before: l
 def test_a_place_not_wanted_is_not_the_tasks(text: str) -> None:
     """The place after "rather than / instead of" was the task's (place Book -> Bed, exit 0)."""
     assert read(text, "FloorPlan309") == (["place Book -> Desk"], [], [])
+
+
+@pytest.mark.data
+def test_a_place_between_things_is_no_order() -> None:
+    """ "onto the counter between them." names a place (paper_h178's line), not a task between two others."""
+    from trust_sets import world_of
+
+    trial = "train/pick_two_obj_and_place-DishSponge-None-CounterTop-421/trial_T20190908_133115_043454"
+    text = "Two sponges from the sinks onto the counter between them."
+    res = translate(text, world_of("FloorPlan421", [trial]), build=False, actions="none")
+    assert [t.summary() for t in res.tasks] == ["place_two 2x DishSponge -> CounterTop"] and not res.unparsed

@@ -52,7 +52,7 @@ _TIME = re.compile(
     rf"\b(?:(?:for|in|within|after)\s+{_NUMBER}\s+(?:seconds?|minutes?|mins?|hours?)(?:{_ORDINAL_SECOND})"
     r"|for a (?:while|bit|moment)|(?:at|for|by|until)\s+\d{1,2}(?::\d\d)?(?:\s*(?:am|pm|o'clock))?"
     r"|(?:before|after|around)\s+\d{1,2}(?::\d\d(?:\s*[ap]m)?|\s*(?:am|pm|o'clock))"
-    r"|(?:in\s+the|this|every|each|tomorrow|at)\s+(?:morning|afternoon|evening|night)"
+    r"|(?:in\s+the|during\s+the|this|every|each|tomorrow|at)\s+(?:morning|afternoon|evening|night)"
     r"|(?:every|each)\s+(?:single\s+|other\s+)?(?:day|week|month|weekday|weekend|hour|time))\b"
 )
 # "when the microwave is free", "once the drawer is empty": a state no task brings about
@@ -84,8 +84,12 @@ _ORDER_TOPIC = re.compile(r"\b(?:order|ordering|sequence)\b")
 # system never saw, so what it asks is unknown and refused; "as before" / "like before" may point at an
 # earlier step of this same instruction (ALFRED's annotators write it so) and are not listed
 _PAST = r"(?:yesterday|last\s+(?:time|week|night)|the\s+other\s+day|usual|always)"
-# "the way you always do", "like you usually do" too (h297)
-_HABIT = r"(?:the\s+way|like|as)\s+(?:you|we)\s+(?:always|usually|normally|generally)\s+(?:do|did)(?:\s+it)?"
+# "the way you always do", "like you usually do", "like you did before" too (h297; "as before" may point at
+# a step of this instruction)
+_HABIT = (
+    r"(?:the\s+way|like|as)\s+(?:you|we)\s+(?:(?:always|usually|normally|generally)\s+(?:do|did)(?:\s+it)?"
+    r"|did\s+(?:it\s+)?(?:before|earlier|last\s+time|yesterday))"
+)
 _UNSEEN_INSTRUCTION = re.compile(
     rf"\b(?:(?:the\s+)?same\s+as\s+{_PAST}|(?:just\s+)?like\s+{_PAST}|{_HABIT}|as\s+(?:usual|always|last\s+time|yesterday)"
     r"|the\s+usual|(?:do|repeat)\s+(?:that|the\s+same)\s+again|what\s+you\s+did\s+(?:yesterday|last\s+time))\b"
@@ -110,9 +114,9 @@ _ONE_ROBOT = re.compile(
 _ONE_ROBOT_WHY = "a task given to one robot: the planner shares the tasks among the robots itself"
 # "between putting the apple in the fridge and putting the bread on the counter, put the mug in the sink":
 # a task said between two others, which no order rule reads (h297), or "A and B, and between those, C",
-# "halfway through that, C"; "between the lamps" is a place
+# "halfway through that, C"; "between the lamps", "onto the counter between them." are places
 _BETWEEN_TASKS = re.compile(
-    r"\b(?:in\s+)?between\s+(?:\w+ing|(?:those|these|them|both|the\s+two)(?=\s*[,.;:]|\s+(?:tasks|jobs|steps)\b)"
+    r"\b(?:in\s+)?between\s+(?:\w+ing|(?:those|these|them|both|the\s+two)(?=\s*,|\s+(?:tasks|jobs|steps)\b)"
     r"|the\s+\w+\s+(?:task|job|step)s?)\b|\bin\s+between\b(?=\s*[,.;:])"
     r"|\b(?:halfway|midway|partway)\s+through\b|\bin\s+the\s+middle\s+of\s+(?:that|this|it|\w+ing)\b"
 )
@@ -123,6 +127,16 @@ _BETWEEN_WHY = "a task said between or during others, which no order rule reads:
 _FALLBACK = re.compile(
     r"\b(?:failing\s+(?:that|this|which|it)|as\s+a\s+(?:fallback|backup|last\s+resort)|if\s+(?:that|this|it)\s+"
     r"(?:fails|doesn't\s+work|does\s+not\s+work|won't\s+work)|plan\s+b)\b|(?:,\s*|\bor\s+)else\b(?!\s+(?:do|to)\b)"
+)
+# "a second time", "once more", "after each apple goes in": a step done again, which no base task is (h297)
+_AGAIN = re.compile(
+    r"\b(?:(?:a\s+(?:second|third|fourth)|one\s+more|another)\s+time|once\s+(?:more|again)"
+    r"|(?:after|before|following)\s+(?:each|every)\s+(?!other\b|time\b|rule\b)\w+)\b"
+)
+# "the white mug ... rather than the black one": two things of one type told apart by a word that no spec
+# says (its atoms name types, h297); "not the red one, the blue one" is a correction's
+_ONE_OF_A_KIND = re.compile(
+    r"\b(?:rather\s+than|instead\s+of)\s+the\s+(?!other\b|same\b|first\b)\w+\s+ones?\b"
 )
 # "is the apple in the fridge", "what is in the fridge", "which plate should it go on?"; not "what I need
 # is ...", a need said as a pseudo-cleft
@@ -203,6 +217,10 @@ def vague_words(instruction: str, mentions: list[Mention], chosen: bool = False)
     ]
     out += [Unread(m[0], "action", _ONE_ROBOT_WHY) for m in _ONE_ROBOT.finditer(lowered)]
     out += [Unread(m[0], "order", _BETWEEN_WHY) for m in _BETWEEN_TASKS.finditer(lowered)]
+    again = "no base task is done more than once: say each time as its own task"
+    out += [Unread(m[0], "count", again) for m in _AGAIN.finditer(lowered)]
+    kind = "a thing told from another of its type by a word no spec says (its atoms name types)"
+    out += [Unread(m[0], "object", kind) for m in _ONE_OF_A_KIND.finditer(lowered)]
     fallback = "a place to fall back on: no base task tries one place and then another; say which"
     out += [Unread(m[0].strip(" ,"), "condition", fallback) for m in _FALLBACK.finditer(lowered)]
     return out + [
