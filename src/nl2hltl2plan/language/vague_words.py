@@ -104,20 +104,22 @@ _EACH_ITS_OWN = re.compile(
 _OF_ITS_OWN = re.compile(r"\s+of\s+(?:its|their|his|her)\s+own\b")  # "into a drawer of its own"
 _EACH_ITS_OWN_WHY = "a place for each thing: a base task names a kind of place, never which one"
 # "have the second robot put ...", "robot one should ...", "the robot on the left ...": a task given to one
-# robot, while the planner shares the tasks among the robots itself (h297)
+# robot, while the planner shares the tasks among the robots itself (h297); "Robot one, cleared to ...": an
+# address
 _ONE_ROBOT = re.compile(
     r"\b(?:(?:the|a|an|your)\s+(?:first|second|third|fourth|other|another|left|right|\w+est|next)\s+(?:robot|bot)\b"
-    r"|another\s+(?:robot|bot)\b|(?:robot|bot)\s+(?:one|two|three|four|no\.?\s*\d+|#?\d+)\b"
+    r"|another\s+(?:robot|bot)\b|(?:robot|bot)\s+(?:one|two|three|four|no\.?\s*\d+|#?\d+)\b(?!\s*,)"
     r"|(?:one|each|either|both|neither|all)\s+of\s+(?:the\s+|you\s+)?(?:robots|bots)"
     r"|(?:robot|bot)\s+(?:on\s+the\s+(?:left|right)|nearest|closest)\b)"
 )
 _ONE_ROBOT_WHY = "a task given to one robot: the planner shares the tasks among the robots itself"
 # "between putting the apple in the fridge and putting the bread on the counter, put the mug in the sink":
 # a task said between two others, which no order rule reads (h297), or "A and B, and between those, C",
-# "halfway through that, C"; "between the lamps", "onto the counter between them." are places
+# "halfway through that, C"; "between the lamps", "onto the counter between them." are places, and "no
+# dependencies between them, so ..." frees an order
 _BETWEEN_TASKS = re.compile(
-    r"\b(?:in\s+)?between\s+(?:\w+ing|(?:those|these|them|both|the\s+two)(?=\s*,|\s+(?:tasks|jobs|steps)\b)"
-    r"|the\s+\w+\s+(?:task|job|step)s?)\b|\bin\s+between\b(?=\s*[,.;:])"
+    r"\b(?:in\s+)?between\s+(?:\w+ing|the\s+\w+\s+(?:task|job|step)s?)\b|\bin\s+between\b(?=\s*[,.;:])"
+    r"|(?:^|(?<=[,.;:]\s)|(?<=\band\s))between\s+(?:those|these|them|both|the\s+two)(?=\s*,)"
     r"|\b(?:halfway|midway|partway)\s+through\b|\bin\s+the\s+middle\s+of\s+(?:that|this|it|\w+ing)\b"
 )
 _BETWEEN_WHY = "a task said between or during others, which no order rule reads: say 'after A, do C, then B'"
@@ -126,7 +128,7 @@ _BETWEEN_WHY = "a task said between or during others, which no order rule reads:
 # task tries one place and then another ("anything else", "somewhere else" are no fallback)
 _FALLBACK = re.compile(
     r"\b(?:failing\s+(?:that|this|which|it)|as\s+a\s+(?:fallback|backup|last\s+resort)|if\s+(?:that|this|it)\s+"
-    r"(?:fails|doesn't\s+work|does\s+not\s+work|won't\s+work)|plan\s+b)\b|(?:,\s*|\bor\s+)else\b(?!\s+(?:do|to)\b)"
+    r"(?:fails|doesn't\s+work|does\s+not\s+work|won't\s+work))\b|(?:,\s*|\bor\s+)else\b(?!\s+(?:do|to)\b)"
 )
 # "a second time", "once more", "after each apple goes in": a step done again, which no base task is (h297)
 _AGAIN = re.compile(
