@@ -29,7 +29,18 @@ def instead_said(text: str) -> str:
         lead = m[0][: len(m[0]) - len(m[0].lstrip())]
         return f"{lead}don't {verb}" if verb else m[0]
 
-    return _INSTEAD_OF_DOING.sub(negated, text)
+    return _PLACE_NOT_WANTED.sub(" instead of ", _INSTEAD_OF_DOING.sub(negated, text))
+
+
+# "put the book on the desk rather than on the bed" / "instead of on the bed" / "in place of the bed": the
+# grammar took the place not wanted as the task's (place Book -> Bed, exit 0, h297); said as "instead of the
+# bed", which it reads as the contrast it is. Inside a sentence only: a sentence that opens so is a swap
+# (`negations.exclusions_unread`) or an action not to do (`_INSTEAD_OF_DOING`).
+_PLACE_NOT_WANTED = re.compile(
+    r"(?<![.;!?,])\s+(?:rather\s+than|instead\s+of|in\s+place\s+of)\s+(?:on|in|into|onto|inside|to)\s+(?=(?:the|a|an)\s)"
+    r"|(?<![.;!?,])\s+in\s+place\s+of\s+(?=(?:the|a|an)\s)",
+    re.I,
+)
 
 
 def _verb_said(word: str) -> str | None:

@@ -11,8 +11,11 @@ from nl2hltl2plan.language.grounding import Mention, sentence_start
 from nl2hltl2plan.language.piece_words import unsure_pieces
 
 # "some apples", "half of the mugs", "every other mug", "the rest": how many is not said
+# "three quarters of the eggs", "a third of the apples", "50% of the mugs" too (read as every egg, h297)
 _VAGUE_AMOUNT = re.compile(
-    r"\b(?:some|most|half|every other|a (?:bunch|number|handful|lot) of|lots of|plenty of)\b(?: of)?"
+    r"\b(?:some|most|half|every other|a (?:bunch|number|handful|lot) of|lots of|plenty of"
+    r"|(?:a|one|two|three|four)\s+(?:quarters?|thirds?|fifths?)|\d+\s*(?:%|percent|per\s+cent))"
+    r"(?:\b|(?<=%))(?: of)?"
 )
 # "half the lettuce", "a quarter of an apple": a part of one thing, which no base task moves (a slice is a
 # task's own word: "a slice of lettuce")
@@ -49,7 +52,7 @@ _TIME = re.compile(
     rf"\b(?:(?:for|in|within|after)\s+{_NUMBER}\s+(?:seconds?|minutes?|mins?|hours?)(?:{_ORDINAL_SECOND})"
     r"|for a (?:while|bit|moment)|(?:at|for|by|until)\s+\d{1,2}(?::\d\d)?(?:\s*(?:am|pm|o'clock))?"
     r"|(?:before|after|around)\s+\d{1,2}(?::\d\d(?:\s*[ap]m)?|\s*(?:am|pm|o'clock))"
-    r"|(?:in\s+the|this|every|each|tomorrow|at)\s+(?:morning|afternoon|evening|night)"
+    r"|(?:in\s+the|during\s+the|this|every|each|tomorrow|at)\s+(?:morning|afternoon|evening|night)"
     r"|(?:every|each)\s+(?:single\s+|other\s+)?(?:day|week|month|weekday|weekend|hour|time))\b"
 )
 # "when the microwave is free", "once the drawer is empty": a state no task brings about
@@ -81,9 +84,61 @@ _ORDER_TOPIC = re.compile(r"\b(?:order|ordering|sequence)\b")
 # system never saw, so what it asks is unknown and refused; "as before" / "like before" may point at an
 # earlier step of this same instruction (ALFRED's annotators write it so) and are not listed
 _PAST = r"(?:yesterday|last\s+(?:time|week|night)|the\s+other\s+day|usual|always)"
+# "the way you always do", "like you usually do", "like you did before" too (h297; "as before" may point at
+# a step of this instruction)
+_HABIT = (
+    r"(?:the\s+way|like|as)\s+(?:you|we)\s+(?:(?:always|usually|normally|generally)\s+(?:do|did)(?:\s+it)?"
+    r"|did\s+(?:it\s+)?(?:before|earlier|last\s+time|yesterday))"
+)
 _UNSEEN_INSTRUCTION = re.compile(
-    rf"\b(?:(?:the\s+)?same\s+as\s+{_PAST}|(?:just\s+)?like\s+{_PAST}|as\s+(?:usual|always|last\s+time|yesterday)"
+    rf"\b(?:(?:the\s+)?same\s+as\s+{_PAST}|(?:just\s+)?like\s+{_PAST}|{_HABIT}|as\s+(?:usual|always|last\s+time|yesterday)"
     r"|the\s+usual|(?:do|repeat)\s+(?:that|the\s+same)\s+again|what\s+you\s+did\s+(?:yesterday|last\s+time))\b"
+)
+# "in its own cabinet", "one per drawer", "in separate drawers", "on a different armchair": a place for each
+# thing, while a base task names a kind of place, never which one (h297); the place must be a thing of the
+# world, so the tabletop's "its own region" (no household mention) is left to its reader
+_EACH_ITS_OWN = re.compile(
+    r"\b(?:(?:in|into|on|onto|inside|to)\s+(?:(?:its|their|his|her)\s+own|(?:an?\s+|the\s+|two\s+|three\s+|\d+\s+)?"
+    r"(?:separate|different|distinct|individual))|per|apiece\s+(?:in|on))\s+"
+)
+_OF_ITS_OWN = re.compile(r"\s+of\s+(?:its|their|his|her)\s+own\b")  # "into a drawer of its own"
+_EACH_ITS_OWN_WHY = "a place for each thing: a base task names a kind of place, never which one"
+# "have the second robot put ...", "robot one should ...", "the robot on the left ...": a task given to one
+# robot, while the planner shares the tasks among the robots itself (h297); "Robot one, cleared to ...": an
+# address
+_ONE_ROBOT = re.compile(
+    r"\b(?:(?:the|a|an|your)\s+(?:first|second|third|fourth|other|another|left|right|\w+est|next)\s+(?:robot|bot)\b"
+    r"|another\s+(?:robot|bot)\b|(?:robot|bot)\s+(?:one|two|three|four|no\.?\s*\d+|#?\d+)\b(?!\s*,)"
+    r"|(?:one|each|either|both|neither|all)\s+of\s+(?:the\s+|you\s+)?(?:robots|bots)"
+    r"|(?:robot|bot)\s+(?:on\s+the\s+(?:left|right)|nearest|closest)\b)"
+)
+_ONE_ROBOT_WHY = "a task given to one robot: the planner shares the tasks among the robots itself"
+# "between putting the apple in the fridge and putting the bread on the counter, put the mug in the sink":
+# a task said between two others, which no order rule reads (h297), or "A and B, and between those, C",
+# "halfway through that, C"; "between the lamps", "onto the counter between them." are places, and "no
+# dependencies between them, so ..." frees an order
+_BETWEEN_TASKS = re.compile(
+    r"\b(?:in\s+)?between\s+(?:\w+ing|the\s+\w+\s+(?:task|job|step)s?)\b|\bin\s+between\b(?=\s*[,.;:])"
+    r"|(?:^|(?<=[,.;:]\s)|(?<=\band\s))between\s+(?:those|these|them|both|the\s+two)(?=\s*,)"
+    r"|\b(?:halfway|midway|partway)\s+through\b|\bin\s+the\s+middle\s+of\s+(?:that|this|it|\w+ing)\b"
+)
+_BETWEEN_WHY = "a task said between or during others, which no order rule reads: say 'after A, do C, then B'"
+# "put the apple in the fridge, failing that the counter" / ", else the counter" / ", as a backup ...": a
+# place to fall back on, which the grammar read as a cooled apple on the counter (exit 0, h297); no base
+# task tries one place and then another ("anything else", "somewhere else" are no fallback)
+_FALLBACK = re.compile(
+    r"\b(?:failing\s+(?:that|this|which|it)|as\s+a\s+(?:fallback|backup|last\s+resort)|if\s+(?:that|this|it)\s+"
+    r"(?:fails|doesn't\s+work|does\s+not\s+work|won't\s+work))\b|(?:,\s*|\bor\s+)else\b(?!\s+(?:do|to)\b)"
+)
+# "a second time", "once more", "after each apple goes in": a step done again, which no base task is (h297)
+_AGAIN = re.compile(
+    r"\b(?:(?:a\s+(?:second|third|fourth)|one\s+more|another)\s+time|once\s+(?:more|again)"
+    r"|(?:after|before|following)\s+(?:each|every)\s+(?!other\b|time\b|rule\b)\w+)\b"
+)
+# "the white mug ... rather than the black one": two things of one type told apart by a word that no spec
+# says (its atoms name types, h297); "not the red one, the blue one" is a correction's
+_ONE_OF_A_KIND = re.compile(
+    r"\b(?:rather\s+than|instead\s+of)\s+the\s+(?!other\b|same\b|first\b)\w+\s+ones?\b"
 )
 # "is the apple in the fridge", "what is in the fridge", "which plate should it go on?"; not "what I need
 # is ...", a need said as a pseudo-cleft
@@ -150,6 +205,26 @@ def vague_words(instruction: str, mentions: list[Mention], chosen: bool = False)
         if m["who"].split()[0] not in _DOERS
         and not any(m.start("who") <= x.char_start < m.end("who") for x in mentions)
     ]
+    out += [
+        Unread(lowered[m.start() : named.char_end].strip(), "place", _EACH_ITS_OWN_WHY)
+        for m in _EACH_ITS_OWN.finditer(lowered)
+        for named in [next((x for x in mentions if x.char_start == m.end()), None)]
+        if named is not None
+    ]
+    out += [
+        Unread(lowered[named.char_start : m.end()], "place", _EACH_ITS_OWN_WHY)
+        for m in _OF_ITS_OWN.finditer(lowered)
+        for named in [next((x for x in mentions if x.char_end == m.start()), None)]
+        if named is not None
+    ]
+    out += [Unread(m[0], "action", _ONE_ROBOT_WHY) for m in _ONE_ROBOT.finditer(lowered)]
+    out += [Unread(m[0], "order", _BETWEEN_WHY) for m in _BETWEEN_TASKS.finditer(lowered)]
+    again = "no base task is done more than once: say each time as its own task"
+    out += [Unread(m[0], "count", again) for m in _AGAIN.finditer(lowered)]
+    kind = "a thing told from another of its type by a word no spec says (its atoms name types)"
+    out += [Unread(m[0], "object", kind) for m in _ONE_OF_A_KIND.finditer(lowered)]
+    fallback = "a place to fall back on: no base task tries one place and then another; say which"
+    out += [Unread(m[0].strip(" ,"), "condition", fallback) for m in _FALLBACK.finditer(lowered)]
     return out + [
         Unread(m.group(0), "condition", "no base task waits on a state: say what to do")
         for m in _STATE_CONDITION.finditer(lowered)
