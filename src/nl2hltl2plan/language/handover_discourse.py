@@ -48,6 +48,7 @@ import re
 from functools import lru_cache
 from typing import NamedTuple
 
+from nl2hltl2plan.language import voice_remarks
 from nl2hltl2plan.language.content_words import vocabulary, word_categories
 from nl2hltl2plan.language.courtesy import courtesy_pattern, courtesy_words
 from nl2hltl2plan.language.frame_filler import (
@@ -62,7 +63,6 @@ from nl2hltl2plan.language.frame_filler import (
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_narration import first_person_as_team
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
-from nl2hltl2plan.language.spelling import american, english_lemmas
 
 # words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
 MEANING = re.compile(
@@ -190,6 +190,7 @@ def empty(
     if header:
         text = frame.records.sub(" ", text)
         text = _RECORD.sub(lambda m: " " if general and _record_kind(m[1]) else m[0], text)
+        text = _RECORD_SAID.sub(lambda m: " " if general and _record_kind(m[1]) else m[0], text)
     text = " ".join(frame.phrases.sub(" ", text).split())
     if label:
         text = frame.label.sub(" ", text)
@@ -224,6 +225,8 @@ def empty(
 # any word English knows that says nothing a task needs, before a number (a letter may be a region: only the
 # listed kinds take one)
 _RECORD = re.compile(r"\b((?:[a-z]+\s+){0,2}?[a-z]+)\s+(?:no\s+|number\s+)?\d+\b")
+# (a number said in words opens it: "Lane two, listen.", "Table four.", h296)
+_RECORD_SAID = re.compile(r"^((?:[a-z]+\s+)?[a-z]+)\s+(?:one|two|three|four|five|six|seven|eight|nine|ten)\b")
 
 
 # a question that asks for something ("What should the arms do?"): its answer may be what a task needs,
@@ -294,12 +297,20 @@ def _label_restated(label: str, after: str, names: frozenset[str]) -> str:
     return re.sub(r"[A-Za-z]+", said_again, label).strip()
 
 
-def heads_dropped(sentence: str, header: bool = False, seen: Dropped = _NOTHING_SEEN) -> str:
+def heads_dropped(
+    sentence: str, header: bool = False, seen: Dropped = _NOTHING_SEEN, voice: bool = False
+) -> str:
     """The sentence without its empty labels ("Re: ...:", "Copy that: ...", a label that only says again
-    what the sentence under it names: "Carrot duty:") and its empty leading phrases ("Okay robot, ...")."""
+    what the sentence under it names: "Carrot duty:"), a `voice`'s heading over a command ("Warm-up set:
+    move ...": `heading_words`, no word of the scene) and its empty leading phrases ("Okay robot, ...")."""
     whole = sentence
     while True:
         label = _LABEL.match(sentence) or _DASHED.match(sentence)
+        if voice and label and voice_remarks.heading_words(label[1]) and not MEANING.search(label[1].lower()):
+            if _ACTION.search(sentence[label.end() :].lower()):  # a command of its own under it
+                seen.dropped is None or seen.dropped.append(label[1])
+                sentence = sentence[label.end() :]
+                continue
         bare = _label_restated(label.group(1), sentence[label.end() :], seen.names) if label else ""
         is_label = label is not None and empty(bare, label=True, header=header, names=seen.names)
         head = label if is_label else _LEAD.match(sentence)
@@ -344,7 +355,7 @@ def _unframed_sentence(sentence: str, header: bool = False, dropped: list[str] |
     """The sentence without its empty labels, leading phrases and phrases at its end, a relayed command
     said as the command."""
     seen = Dropped(dropped)
-    return tails_dropped(_unrelayed(_ASIDE.sub("", heads_dropped(sentence, header, seen))), seen)
+    return tails_dropped(_unrelayed(_ASIDE.sub("", heads_dropped(sentence, header, seen, voice=True))), seen)
 
 
 def _hesitation(fragment: str) -> bool:
@@ -532,29 +543,6 @@ def _unsigned(sentences: list[str], dropped: list[str] | None = None) -> list[st
     return sentences
 
 
-# a start signal said as a whole sentence ("Go.", "Go ahead!", "Begin.", "Proceed.", a coach's "Move!"): when
-# to start, which is now; it names nothing to do ("go" alone has no block and no place)
-_START_SIGNAL = re.compile(
-    r"(?i)^\s*(?:go(?:\s+(?:ahead|now))?|begin(?:\s+now)?|start(?:\s+now)?|proceed|move)\s*[.!]*\s*$"
-)
-
-
-# what may follow a command's verb without being a thing it acts on ("Grab your partners", "Hold on")
-_NO_OBJECT = frozenset("your yours yourself yourselves on off up down out in it".split())
-
-
-def _commanded(sentence: str) -> bool:
-    """Whether a clause of the sentence is a command with an object ("sing a song", "Stoke the forge"): an
-    action on a thing, which no voice's edge drops (h235: a verb with an object is read or refused); or
-    the sentence is a word no lexicon of English forms knows, alone (a name)."""
-    if len(ws := re.findall(r"[a-z]+", sentence.lower())) == 1 and not english_lemmas(american(ws[0])):
-        return True  # a name alone, no sign-off's ("Ana"): it may name who acts, so it is read or refused
-    for clause in re.split(r"[,;:!?.]", sentence.lower()):
-        ws = re.findall(r"[a-z]+", clause)
-        if len(ws) >= 2 and "VERB" in english_lemmas(american(ws[0])) and ws[1] not in _NO_OBJECT:
-            return True
-    return False
-
 
 def _voice_edges(sentences: list[str]) -> set[int]:
     """The opening and closing sentences of a voice that name nothing (h281: "Bow to your partner!",
@@ -564,7 +552,8 @@ def _voice_edges(sentences: list[str]) -> set[int]:
     said = [
         empty(s, whole=True, header=k == 0, voice=True)
         and not named_alone(tuple(re.findall(r"[a-z]+", s.lower())))
-        and not _commanded(s)
+        and not voice_remarks.commanded(s)
+        or _remark(s)
         for k, s in enumerate(sentences)
     ]
     if all(said):
@@ -574,16 +563,32 @@ def _voice_edges(sentences: list[str]) -> set[int]:
     return set(range(first)) | set(range(last, len(said)))
 
 
+def _names_any(text: str) -> bool:
+    return bool(MEANING.search(text.lower()) or _ACTION.search(text.lower()))
+
+
+def _remark(sentence: str) -> bool:
+    """A voice's warning of nothing the scene has ("Mind the dog.") or its farewell ("Ta-ra.", h296)."""
+    warned = voice_remarks.caution_of(sentence)
+    return (warned is not None and not _names_any(warned)) or voice_remarks.farewell(sentence)
+
+
 def plain(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
     """The sentences with empty fragments, start signals and a sign-off's name dropped, reported speech and
     first-person narration said as the team's commands (see the module docstring); what only the general
     filler rule dropped is added to `dropped`, where given."""
     out = []
-    sentences = _unsigned(sentences, dropped)
+    untagged = [voice_remarks.closing_tags(s) for s in _unsigned(sentences, dropped)]  # "..., isn't it, pet?"
+    sentences = [s for s, _ in untagged]
+    if dropped is not None:
+        dropped.extend(tag for _, tags in untagged for tag in tags)
     edges = _voice_edges(sentences)
     for k, sentence in enumerate(sentences):
         framed = frame_gone(sentence, Dropped(dropped), whole=True, header=k == 0, voice=k in edges)
-        if framed or _START_SIGNAL.match(sentence):
+        remark = not framed and k in edges and _remark(sentence)
+        if remark and dropped is not None:
+            dropped.append(sentence.strip(" .!?"))
+        if framed or remark or voice_remarks.start_signal(sentence):
             continue
         if k == 0 and _called(sentence.rstrip(" ,.!:")):  # a letter's greeting on its own: "Dear Sam,"
             continue
