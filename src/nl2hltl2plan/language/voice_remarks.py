@@ -11,7 +11,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from nl2hltl2plan.language.content_words import phrase_list_pattern, vocabulary
+from nl2hltl2plan.language.content_words import phrase_list_pattern, phrase_words, vocabulary, word_categories
 from nl2hltl2plan.language.spelling import american, english_lemmas, english_word
 
 
@@ -65,6 +65,8 @@ def start_signal(sentence: str) -> bool:
 
 # what may follow a command's verb without being a thing it acts on ("Grab your partners", "Hold on")
 _NO_OBJECT = frozenset("your yours yourself yourselves on off up down out in it".split())
+# a courtesy before a command's verb ("Please raise your glasses": the verb is "raise")
+_POLITE = re.compile(r"^\W*(?:(?:please|kindly|now|just|and|so)\s+)+")
 # "is" / "'s" after a remark's subject ("Floors are wet", "Power's off"): a remark, no command
 _COPULA = frozenset("s is are was were".split())
 
@@ -73,7 +75,8 @@ def commanded(sentence: str) -> bool:
     """Whether a clause of the sentence is a command with an object ("sing a song", "Stoke the forge"): an
     action on a thing, which no voice's edge drops (h235: a verb with an object is read or refused); or
     the sentence is a word no lexicon of English forms knows, alone (a name). A remark on a thing ("Floors
-    are wet") and a warning ("Mind the dog": `caution_of`) are no commands.
+    are wet"), a likeness ("like a gondola under a bridge") and a warning ("Mind the dog": `caution_of`) are
+    no commands.
 
     >>> commanded("Stoke the forge"), commanded("Floors are wet, so listen"), commanded("Mind the soot")
     (True, False, False)
@@ -81,8 +84,8 @@ def commanded(sentence: str) -> bool:
     if len(ws := re.findall(r"[a-z]+", sentence.lower())) == 1 and not english_lemmas(american(ws[0])):
         return True  # a name alone, no sign-off's ("Ana"): it may name who acts, so it is read or refused
     for clause in re.split(r"[,;:!?.]", sentence.lower()):
-        ws = re.findall(r"[a-z]+", clause)
-        if len(ws) < 2 or ws[1] in _NO_OBJECT or ws[1] in _COPULA or caution_of(clause):
+        ws = re.findall(r"[a-z]+", _POLITE.sub("", clause))
+        if len(ws) < 2 or ws[0] == "like" or ws[1] in _NO_OBJECT | _COPULA or caution_of(clause):
             continue
         if "VERB" in english_lemmas(american(ws[0])):
             return True
@@ -96,17 +99,26 @@ _NOT_IN_HEADING = frozenset("the a an this that these those it its them they the
 
 def heading_words(label: str) -> bool:
     """Whether a label's words (before a colon) may be a voice's heading over a command: at most three words
-    English knows (a compound's parts, "warm-up"), no article or pronoun ("Warm-up set", "Front counter",
-    "Near fore"; not "Clean the table"), no word that says a count, an order, a negation or a time (the
-    readers' lists). Whether they name a thing of the scene is the caller's test.
+    English knows (a compound's parts, "warm-up"), no article or pronoun ("Warm-up set", "Today's special",
+    "Chorus, everybody"; not "Clean the table"), no word that says a count, an order, a negation or a time
+    (the readers' lists) or that adds, hedges or places (`frame_keeps.txt`: "Optional:", "Top shelf:").
+    Whether they name a thing of the scene is the caller's test.
 
-    >>> heading_words("Warm-up set"), heading_words("Clean the table"), heading_words("Zorg")
+    >>> heading_words("Warm-up set"), heading_words("Clean the table"), heading_words("Optional")
     (True, False, False)
     """
     words = re.findall(r"[a-z]+", label.lower().replace("'s", ""))
     if not words or len(re.findall(r"[\w'-]+", label)) > 3:
         return False
-    return all(w not in _NOT_IN_HEADING and english_word(american(w)) and not _says_how(w) for w in words)
+    return all(w not in _not_in_heading() and english_word(american(w)) and not _says_how(w) for w in words)
+
+
+@lru_cache(maxsize=1)
+def _not_in_heading() -> frozenset[str]:
+    """The words a heading never holds: `_NOT_IN_HEADING`, `frame_keeps.txt`'s (they add, hedge, say a
+    time or a place: "Optional:", "Top shelf:") and `voice_remarks.txt`'s `never_heading` ("Done:")."""
+    keeps = frozenset().union(*word_categories("frame_keeps.txt").values())
+    return _NOT_IN_HEADING | keeps | phrase_words("voice_remarks.txt", "never_heading")
 
 
 # the readers' word kinds a heading may use as nouns ("Warm-up set", "Power cut"): things and actions; a
