@@ -182,8 +182,8 @@ def _mark_target_complements(m: Marked) -> None:
         rf"(?:remaining|rest\s+of\s+the)\s+{PLACE_NOUN}\b"
     )
     targets = (
-        rf"(?:the\s+|their\s+|its\s+|an?\s+|one\s+of\s+the\s+|{_THAT})?(?:{TARGET}\s+{PLACE_NOUN}|targets?|goals?)\b|"
-        rf"{_THAT}{PLACE_NOUN}\b"  # "outside that (target) area": the one just named (h296)
+        # ("outside that target area", h296)
+        rf"(?:the\s+|their\s+|its\s+|an?\s+|one\s+of\s+the\s+|{_THAT})?(?:{TARGET}\s+{PLACE_NOUN}|targets?|goals?)\b"
     )
     complement = (
         rf"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:{PLACE_NOUN}|anywhere)\s+(?:{OTHER_THAN}|that\s+(?:is|are)\s+not)\s+"
