@@ -152,7 +152,7 @@ NEGATED_GERUNDS = {
 # "moseys on back to": "back" is kept, it says the place the thing left; "sets off for", "are headed for",
 # h296): every reader reads them as "goes to" / "goes" (a verb's tense and number change nothing a task needs)
 SET_OFF_FOR = (
-    r"\b(?:(?:sets?|setting|heads?|heading)\s+off|(?:is|are|s)\s+(?:headed|heading))\s+(?:for|towards?)\b"
+    r"\b(?:(?:sets?|setting|heads?|heading)\s+off|(?:is|are)\s+(?:headed|heading))\s+(?:for|towards?)\b"
 )
 WAY_IDIOM = (
     r"\b(?:(?:makes?|making|made|finds?|finding|found|wends?|wending)\s+(?:its|their)\s+way|heads?|heading|"
