@@ -154,7 +154,14 @@ NEGATED_GERUNDS = {
 SET_OFF_FOR = (
     r"\b(?:(?:sets?|setting|heads?|heading)\s+off|(?:is|are)\s+(?:headed|heading))\s+(?:for|towards?)\b"
 )
+# a voice's steps of a dance or a stroll, said of the thing moved ("the yellow block dances to region I",
+# "promenade over to", "sashay off to"; h296)
+_STEPS = (
+    r"danc(?:es?|ing)|promenad(?:es?|ing)|sashay(?:s|ing)?|waltz(?:es|ing)?|glid(?:es?|ing)|hops?|hopping|"
+    r"strolls?|strolling|trots?|trotting|ambl(?:es?|ing)|saunter(?:s|ing)?"
+)
 WAY_IDIOM = (
     r"\b(?:(?:makes?|making|made|finds?|finding|found|wends?|wending)\s+(?:its|their)\s+way|heads?|heading|"
-    r"moseys?|moseying|cross(?:es)?|crossing)(?:\s+(?:on|over|off|along|across))*\s+(?=(?:back\s+)?(?:to|towards?|into|onto)\b)"
+    rf"moseys?|moseying|cross(?:es)?|crossing|{_STEPS})(?:\s+(?:on|over|off|along|across))*\s+"
+    r"(?=(?:back\s+)?(?:to|towards?|into|onto)\b)"
 )
