@@ -3,9 +3,9 @@ voice's opening or closing, a warning of nothing the scene has ("Mind the dog.",
 grate.") and a farewell ("Ta-ra.") are frame; a tag question or an endearment after a comma at a sentence's
 end ("..., there's a dear.", "..., isn't it, pet?") is dropped; a heading of the voice's own words over a
 command ("Today's special: put ...", "Warm-up set: ...") and a record's kind with a number said in words
-("Lane two, listen.") are frame. Goal words of a voice: "ferry ... over to", "are headed for", "outside that
-target area". A warning of a scene's thing, a heading that hedges or says when ("Optional:", "Done:") and
-a command with an object (h235) stay refused.
+("Lane two, listen.") are frame. Goal words of a voice: "ferry ... over to", "are headed for", "dances
+to", "outside that target area". A warning of a scene's thing, a heading that hedges or says when
+("Optional:", "Done:") and a command with an object (h235) stay refused.
 
 The sentences are the committed batch `dev_h296` (handover_styles_session10.json), written with the
 held-out `held_h296` before the rules.
@@ -31,6 +31,8 @@ WRITTEN = [
     (2, DEV["butcher"]["2"]),  # "Today's special: put ... Anything else, sweetheart?"
     (2, "Lane two, listen. " + PLACEMENT + " Lovely, wasn't it, pet?"),
     (2, "The three blocks are headed for regions H, I and J, with only one block allowed in each region."),
+    (8, "First the yellow block dances to region I, then it dances on to region G. The red block and the blue"
+     " block can each go to any empty region at any time."),
     (3, "Ferry the three pillars over to the placement area beside arm a and arm b, namely regions E, F and"
      " G; no pillar is to be placed on any region outside that target area."),
 ]
