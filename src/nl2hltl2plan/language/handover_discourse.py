@@ -308,7 +308,8 @@ def heads_dropped(
         label = _LABEL.match(sentence) or _DASHED.match(sentence)
         if voice and label and voice_remarks.heading_words(label[1]) and not MEANING.search(label[1].lower()):
             if _ACTION.search(sentence[label.end() :].lower()):  # a command of its own under it
-                seen.dropped is None or seen.dropped.append(label[1])
+                if seen.dropped is not None:
+                    seen.dropped.append(label[1])
                 sentence = sentence[label.end() :]
                 continue
         bare = _label_restated(label.group(1), sentence[label.end() :], seen.names) if label else ""
