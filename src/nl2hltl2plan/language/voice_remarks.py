@@ -65,8 +65,9 @@ def start_signal(sentence: str) -> bool:
 
 # what may follow a command's verb without being a thing it acts on ("Grab your partners", "Hold on")
 _NO_OBJECT = frozenset("your yours yourself yourselves on off up down out in it".split())
-# a courtesy before a command's verb ("Please raise your glasses": the verb is "raise")
-_POLITE = re.compile(r"^\W*(?:(?:please|kindly|now|just|and|so)\s+)+")
+# a courtesy or a "let's" before a command's verb ("Please raise your glasses", "Let's play darts": the verb
+# is "raise", "play")
+_POLITE = re.compile(r"^\W*(?:(?:please|kindly|now|just|and|so|let['’]s|let\s+us)\s+)+")
 # "is" / "'s" after a remark's subject ("Floors are wet", "Power's off"): a remark, no command
 _COPULA = frozenset("s is are was were".split())
 
@@ -78,8 +79,8 @@ def commanded(sentence: str) -> bool:
     are wet"), a likeness ("like a gondola under a bridge") and a warning ("Mind the dog": `caution_of`) are
     no commands.
 
-    >>> commanded("Stoke the forge"), commanded("Floors are wet, so listen"), commanded("Mind the soot")
-    (True, False, False)
+    >>> commanded("Stoke the forge"), commanded("Floors are wet, so listen"), commanded("Let's play darts")
+    (True, False, True)
     """
     if len(ws := re.findall(r"[a-z]+", sentence.lower())) == 1 and not english_lemmas(american(ws[0])):
         return True  # a name alone, no sign-off's ("Ana"): it may name who acts, so it is read or refused
