@@ -1,8 +1,8 @@
 """h296 (issue 28): the tabletop voices' wording. A later stage said as a wait ("Round two doesn't start till
 both of them are in: then ...", "Nobody touches the carrot or the red apple till ...; then ...") is read as
 "once STATE, REST" where that is all it says (`tabletop_waits`); a person's ease with any order ("the
-captain's happy either way") frees the order (`free_order.txt`); "file" and "post" are placing verbs ("is
-to be filed in"). A wait on other things than the ones placed after it stays refused.
+captain's happy either way") frees the order (`free_order.txt`). A wait on other things than the ones
+placed after it stays refused.
 
 The lines of the dev batch are `DEV_H296` (tests/experiments/rephrasings.py), written with the held-out
 `HELD_H296` before the rules."""
@@ -36,10 +36,10 @@ def test_a_wait_on_other_things_than_the_ones_placed_stays_refused() -> None:
     assert pairs_read(STAGE_ONE + "Nobody touches the carrot until both of them are in. " + STAGE_TWO) is None
 
 
-def test_a_persons_ease_frees_the_order_and_filed_in_is_placing() -> None:
+def test_a_persons_ease_frees_the_order() -> None:
     text = (
-        "The green apple is to be filed in the pink plate, the orange in the yellow plate and the red apple "
-        "in the blue plate. The captain's happy either way."
+        "The green apple goes in the pink plate, the orange in the yellow plate and the red apple in the "
+        "blue plate. No fixed order, the depot's fine either way."
     )
     pairs = sorted([("GreenApple", "PinkPlate"), ("Orange", "YellowPlate"), ("RedApple", "BluePlate")])
     assert pairs_read(text) == (pairs, [])

@@ -190,7 +190,8 @@ def empty(
     if header:
         text = frame.records.sub(" ", text)
         text = _RECORD.sub(lambda m: " " if general and _record_kind(m[1]) else m[0], text)
-        text = _RECORD_SAID.sub(lambda m: " " if general and _record_kind(m[1]) else m[0], text)
+        alone = re.match(rf"{_RECORD_SAID.pattern}\s+{PART_END}\b", " ".join([*marked, PART_END]))
+        text = _RECORD_SAID.sub(lambda m: " " if general and alone and _record_kind(m[1]) else m[0], text)
     text = " ".join(frame.phrases.sub(" ", text).split())
     if label:
         text = frame.label.sub(" ", text)
@@ -225,7 +226,8 @@ def empty(
 # any word English knows that says nothing a task needs, before a number (a letter may be a region: only the
 # listed kinds take one)
 _RECORD = re.compile(r"\b((?:[a-z]+\s+){0,2}?[a-z]+)\s+(?:no\s+|number\s+)?\d+\b")
-# (a number said in words opens it: "Lane two, listen.", "Table four.", h296)
+# (a number said in words opens it and ends its part: "Lane two, listen.", "Table four.", not "Kiddo, one
+# job", a count of the jobs; h296)
 _RECORD_SAID = re.compile(r"^((?:[a-z]+\s+)?[a-z]+)\s+(?:one|two|three|four|five|six|seven|eight|nine|ten)\b")
 
 
@@ -564,14 +566,11 @@ def _voice_edges(sentences: list[str]) -> set[int]:
     return set(range(first)) | set(range(last, len(said)))
 
 
-def _names_any(text: str) -> bool:
-    return bool(MEANING.search(text.lower()) or _ACTION.search(text.lower()))
-
-
 def _remark(sentence: str) -> bool:
     """A voice's warning of nothing the scene has ("Mind the dog.") or its farewell ("Ta-ra.", h296)."""
-    warned = voice_remarks.caution_of(sentence)
-    return (warned is not None and not _names_any(warned)) or voice_remarks.farewell(sentence)
+    warned = (voice_remarks.caution_of(sentence) or "").lower()
+    named = MEANING.search(warned) or _ACTION.search(warned)
+    return bool(warned and not named) or voice_remarks.farewell(sentence)
 
 
 def plain(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
