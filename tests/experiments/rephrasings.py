@@ -3253,3 +3253,60 @@ HELD_H286: dict[str, dict[int, list[str]]] = {
             "in; then the carrot and the red apple go in the blue plate, any order you like."],
     },
 }
+
+
+# h296's batches (session 34, issue 28): two rephrasings of each of the paper's four tabletop tasks per batch,
+# one per voice, in voices no batch above uses (dev: a postwoman, a stagehand; held: a cobbler, a lumberjack),
+# with a person's ease as the order's freedom, a voice's verb in "is to be ... in", and task 4's second stage
+# said as a wait; written together and committed before any rule of that round; HELD_H296 is scored once,
+# unchanged, at the end (results/experiments/h296.md). Truths: each task's ground truth, as above HELD_H210.
+DEV_H296: dict[str, dict[int, list[str]]] = {
+    "postwoman": {
+        1: ["Morning! Two deliveries on my round. The green apple is to be posted in the blue plate and the "
+            "orange in the yellow plate."],
+        2: ["Three parcels for this street: the green apple to the pink plate, the orange to the yellow "
+            "plate, the red apple to the blue plate. The sorting office is happy either way about the "
+            "order."],
+        3: ["Big sack today. The carrot goes in the blue plate, the orange in the yellow plate, the green "
+            "apple in the green plate and the red apple in the pink plate. No fixed order, the depot's fine "
+            "either way."],
+        4: ["Two rounds today. Round one: the green apple and the orange go in the yellow plate, either one "
+            "first. Round two doesn't start till both of those are in: then the carrot and the red apple go "
+            "in the blue plate, any order."],
+    },
+    "stagehand": {
+        1: ["Scene change, quick. The green apple is to be set in the blue plate and the orange in the "
+            "yellow plate. Curtain up in five."],
+        2: ["Three props to place: green apple in the pink plate, orange in the yellow plate, red apple in "
+            "the blue plate. The director's easy either way on the order."],
+        3: ["Props for act two: the carrot onto the blue plate, the orange onto the yellow plate, the green "
+            "apple onto the green plate, the red apple onto the pink plate. Any order, the stage manager "
+            "doesn't mind."],
+        4: ["Act one: the green apple and the orange into the yellow plate, whichever first. Nobody touches "
+            "the carrot or the red apple until those two are in. Then the carrot and the red apple into the "
+            "blue plate, in any order."],
+    },
+}
+HELD_H296: dict[str, dict[int, list[str]]] = {
+    "cobbler": {
+        1: ["The green apple is to be stitched into the blue plate, and the orange into the yellow plate. "
+            "Good as new."],
+        2: ["Three pairs to mend: the green apple into the pink plate, the orange into the yellow plate, the "
+            "red apple into the blue plate. The customer's happy either way on order."],
+        3: ["Carrot in the blue plate, orange in the yellow plate, green apple in the green plate, red apple "
+            "in the pink plate. No particular order, the shop's fine either way."],
+        4: ["Soles first: put the green apple and the orange in the yellow plate, either one first. Heels "
+            "don't start till both are in: then the carrot and the red apple go in the blue plate, in any "
+            "order."],
+    },
+    "lumberjack": {
+        1: ["Timber! The green apple is to be hauled to the blue plate and the orange to the yellow plate."],
+        2: ["Three logs to shift: the green apple to the pink plate, the orange to the yellow plate, the red "
+            "apple to the blue plate. Foreman's happy whichever way you go."],
+        3: ["The carrot goes on the blue plate, the orange on the yellow plate, the green apple on the green "
+            "plate and the red apple on the pink plate. Whatever order suits, the crew's easy either way."],
+        4: ["First load: the green apple and the orange into the yellow plate, whichever goes first. The "
+            "second load waits till both of them are in; then the carrot and the red apple into the blue "
+            "plate, either order."],
+    },
+}

@@ -189,6 +189,8 @@ def _phrase_pattern(phrase: str) -> str:
 def _word(word: str) -> str:
     if word == "*":  # any one word ("the order of * is your choice": of play, of the stops)
         return "[a-z]+"
+    if word == "*'s":  # any one word and its "'s" ("the captain's happy either way")
+        return "[a-z]+['’]s"
     return re.escape(word).replace("n't", "\\s*n[o']?t")
 
 

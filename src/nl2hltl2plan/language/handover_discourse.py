@@ -48,6 +48,7 @@ import re
 from functools import lru_cache
 from typing import NamedTuple
 
+from nl2hltl2plan.language import voice_remarks
 from nl2hltl2plan.language.content_words import vocabulary, word_categories
 from nl2hltl2plan.language.courtesy import courtesy_pattern, courtesy_words
 from nl2hltl2plan.language.frame_filler import (
@@ -62,7 +63,15 @@ from nl2hltl2plan.language.frame_filler import (
 from nl2hltl2plan.language.grammar.everyday import HESITATION
 from nl2hltl2plan.language.handover_narration import first_person_as_team
 from nl2hltl2plan.language.handover_words import DONE, GERUND, SWAP, TOUCH, VERB
-from nl2hltl2plan.language.spelling import american, english_lemmas
+from nl2hltl2plan.language.reported_forms import (
+    AND_SAID,
+    BACKSHIFT,
+    RECEIVED,
+    REPORTED_CLAUSE,
+    REPORTED_COMMAND,
+    SOURCE,
+    WANTED,
+)
 
 # words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
 MEANING = re.compile(
@@ -190,6 +199,8 @@ def empty(
     if header:
         text = frame.records.sub(" ", text)
         text = _RECORD.sub(lambda m: " " if general and _record_kind(m[1]) else m[0], text)
+        alone = re.match(rf"{_RECORD_SAID.pattern}\s+{PART_END}\b", " ".join([*marked, PART_END]))
+        text = _RECORD_SAID.sub(lambda m: " " if general and alone and _record_kind(m[1]) else m[0], text)
     text = " ".join(frame.phrases.sub(" ", text).split())
     if label:
         text = frame.label.sub(" ", text)
@@ -224,6 +235,9 @@ def empty(
 # any word English knows that says nothing a task needs, before a number (a letter may be a region: only the
 # listed kinds take one)
 _RECORD = re.compile(r"\b((?:[a-z]+\s+){0,2}?[a-z]+)\s+(?:no\s+|number\s+)?\d+\b")
+# (a number said in words opens it and ends its part: "Lane two, listen.", "Table four.", not "Kiddo, one
+# job", a count of the jobs; h296)
+_RECORD_SAID = re.compile(r"^((?:[a-z]+\s+)?[a-z]+)\s+(?:one|two|three|four|five|six|seven|eight|nine|ten)\b")
 
 
 # a question that asks for something ("What should the arms do?"): its answer may be what a task needs,
@@ -294,12 +308,21 @@ def _label_restated(label: str, after: str, names: frozenset[str]) -> str:
     return re.sub(r"[A-Za-z]+", said_again, label).strip()
 
 
-def heads_dropped(sentence: str, header: bool = False, seen: Dropped = _NOTHING_SEEN) -> str:
+def heads_dropped(
+    sentence: str, header: bool = False, seen: Dropped = _NOTHING_SEEN, voice: bool = False
+) -> str:
     """The sentence without its empty labels ("Re: ...:", "Copy that: ...", a label that only says again
-    what the sentence under it names: "Carrot duty:") and its empty leading phrases ("Okay robot, ...")."""
+    what the sentence under it names: "Carrot duty:"), a `voice`'s heading over a command ("Warm-up set:
+    move ...": `heading_words`, no word of the scene) and its empty leading phrases ("Okay robot, ...")."""
     whole = sentence
     while True:
         label = _LABEL.match(sentence) or _DASHED.match(sentence)
+        if voice and label and voice_remarks.heading_words(label[1]) and not MEANING.search(label[1].lower()):
+            if _ACTION.search(sentence[label.end() :].lower()):  # a command of its own under it
+                if seen.dropped is not None:
+                    seen.dropped.append(label[1])
+                sentence = sentence[label.end() :]
+                continue
         bare = _label_restated(label.group(1), sentence[label.end() :], seen.names) if label else ""
         is_label = label is not None and empty(bare, label=True, header=header, names=seen.names)
         head = label if is_label else _LEAD.match(sentence)
@@ -344,7 +367,7 @@ def _unframed_sentence(sentence: str, header: bool = False, dropped: list[str] |
     """The sentence without its empty labels, leading phrases and phrases at its end, a relayed command
     said as the command."""
     seen = Dropped(dropped)
-    return tails_dropped(_unrelayed(_ASIDE.sub("", heads_dropped(sentence, header, seen))), seen)
+    return tails_dropped(_unrelayed(_ASIDE.sub("", heads_dropped(sentence, header, seen, voice=True))), seen)
 
 
 def _hesitation(fragment: str) -> bool:
@@ -384,61 +407,7 @@ def _called(fragment: str) -> bool:
 _INNER = re.compile(r",\s*([^,:;]{1,40}?)\s*(?=,)")
 
 
-# -- reported speech ---------------------------------------------------------------------------------
-_SPEAKER = r"(?P<speaker>(?:the|our|my|your)\s+(?:[a-z]+\s+)?[a-z]+|he|she|they|someone|(?-i:[A-Z][a-z]+))"
-# what a speaker wrote: "Kim's message", "the foreman's note"
-_WRITING = r"(?:\s*['’]s\s+(?:message|note|e-?mail|text|memo|reply|notes))?"
-_RECIPIENT = r"(?:us|me|you|them|everyone|everybody|(?:all\s+)?(?:the\s+)?(?:arms|robots|team|crew))"
-_SAY = r"(?:said|says|say|mentioned|explained|insisted|added|stated|wrote|writes|reads|read)"
-_ASK = (
-    r"(?:told|tells|asked|asks|wants|wanted|instructed|instructs|reminded|reminds|needs|needed|"
-    r"(?:is|was|are|were)\s+(?:asking|telling))"
-)
-_TELL_ON = rf"(?:\s+to\s+tell\s+{_RECIPIENT})?"  # "Sam told me to tell you to ..."
-# "X said / says (to us) to VERB", "X told us to VERB", "X said not to VERB": the command
-_REPORTED_COMMAND = re.compile(
-    rf"(?i)(?P<start>^|,\s*|\band\s+){_SPEAKER}\s+(?:{_SAY}(?:\s+to\s+{_RECIPIENT})?|{_ASK}\s+{_RECIPIENT}{_TELL_ON})"
-    rf"\s+(?P<neg>not\s+)?to\s+"
-)
-# "X said (that) CLAUSE", "X says: CLAUSE", "X told us (that) CLAUSE": the clause
-_REPORTED_CLAUSE = re.compile(
-    rf"(?i)(?P<start>^|,\s*|\band\s+){_SPEAKER}{_WRITING}\s+(?:{_SAY}|told\s+{_RECIPIENT})(?:\s+that\b|\s*:)?\s+"
-)
-# the source said before what it says: "According to the supervisor, ...", "Per Dana, ...", "As the manager
-# put it, ...", "Quote from the lead: ...", "Word from the lead is to ...", "Just heard from Priya: ..."
-_SOURCE = re.compile(
-    rf"(?i)(?P<start>^)\s*(?:according\s+to|per|as|(?:a\s+)?(?:quote|message|note|word)\s+from|"
-    rf"(?:just\s+)?heard\s+from)\s+{_SPEAKER}"
-    r"(?:\s*,|\s+(?:put\s+it|said|says|wrote)\s*,|\s*:|\s+is\s+(?:that\s+|to\s+(?=\w)))\s*"
-)
-# the command received, said by the team that is to do it: "we were asked to ...", "we have been told not to
-# ...", "our instructions are to ...", "plan how the arms move ..." (an exam's or a brief's question)
-_RECEIVED = re.compile(
-    r"(?i)(?P<start>^|,\s*|\band\s+)(?:(?:we|the\s+(?:arms|robots|team))\s+(?:were|are|have\s+been|['’]ve\s+been)\s+"
-    r"(?:asked|told|instructed|requested|directed)\s+|(?:our|the|my|your)\s+(?:instructions|orders)\s+(?:are|were)\s+|"
-    r"(?:plan|work\s+out|figure\s+out)\s+how\s+(?:the\s+(?:arms|robots)|we|you|to)\s+(?:can\s+|could\s+|should\s+)?|"
-    # a support agent saying the request back: "(just to confirm,) you'd like the arms to ..."
-    r"you\s*(?:['’]d|\s+would)\s+(?:like|want)\s+(?:the\s+(?:arms|robots)|us)\s+)"
-    r"(?P<neg>not\s+)?(?:to\s+)?(?=[a-z])"
-)
-# "and said / and told us (that) CLAUSE" (the speaker said before): the clause
-_AND_SAID = re.compile(rf"(?i)\band\s+(?:{_SAY}|told\s+{_RECIPIENT})(?:\s+that\b)?\s+")
-# "she wanted the yellow block put back on G": a need
-_WANTED = re.compile(
-    rf"(?i)(?P<start>^|,\s*|\band\s+){_SPEAKER}\s+(?:wants?|wanted|needs?|needed)\s+(?!{_RECIPIENT}\b|to\b)"
-)
-# the past tense of reported speech, back in the present
-_BACKSHIFT = tuple(
-    (re.compile(rf"(?i)\b{pattern}\b"), replacement)
-    for pattern, replacement in (
-        (r"had\s+to", "must"),
-        (r"was\s+to", "is to"),
-        (r"were\s+to", "are to"),
-        (r"could", "can"),
-        (r"had\s+(?=been\b|touched\b|picked\b|grabbed\b|handled\b|moved\b|lifted\b|placed\b)", "has "),
-    )
-)
-
+# -- reported speech (its forms are `reported_forms`'s) -------------------------------------------
 
 _NOBODY = frozenset("nobody noone none nothing neither never no".split())
 
@@ -493,19 +462,19 @@ def unreported(sentence: str) -> str:
         reported = True
         return match.group("start") + ("do not " if match.group("neg") else "")
 
-    sentence = _RECEIVED.sub(received, sentence)
-    sentence = _SOURCE.sub(clause, sentence)
-    sentence = _REPORTED_COMMAND.sub(command, sentence)
-    sentence = _REPORTED_CLAUSE.sub(clause, sentence)
-    sentence = _WANTED.sub(wanted, sentence)
+    sentence = RECEIVED.sub(received, sentence)
+    sentence = SOURCE.sub(clause, sentence)
+    sentence = REPORTED_COMMAND.sub(command, sentence)
+    sentence = REPORTED_CLAUSE.sub(clause, sentence)
+    sentence = WANTED.sub(wanted, sentence)
     if not reported:
         return sentence
-    sentence = _AND_SAID.sub("and ", sentence)
+    sentence = AND_SAID.sub("and ", sentence)
     sentence = re.sub(r"(?i)\band\s+that\s+", "and ", sentence)
     # "told us to move ... and (not) to put ...": the second command
     second = re.compile(rf"(?i)\band\s+(not\s+)?to\s+(?=(?:{VERB}|{SWAP}|{TOUCH})\b)")
     sentence = second.sub(lambda m: "and do not " if m[1] else "and ", sentence)
-    for pattern, replacement in _BACKSHIFT:
+    for pattern, replacement in BACKSHIFT:
         sentence = pattern.sub(replacement, sentence)
     return sentence
 
@@ -538,29 +507,6 @@ def unsigned(sentences: list[str], seen: Dropped = _NOTHING_SEEN) -> list[str]:
     return sentences[:-1]
 
 
-# a start signal said as a whole sentence ("Go.", "Go ahead!", "Begin.", "Proceed.", a coach's "Move!"): when
-# to start, which is now; it names nothing to do ("go" alone has no block and no place)
-_START_SIGNAL = re.compile(
-    r"(?i)^\s*(?:go(?:\s+(?:ahead|now))?|begin(?:\s+now)?|start(?:\s+now)?|proceed|move)\s*[.!]*\s*$"
-)
-
-
-# what may follow a command's verb without being a thing it acts on ("Grab your partners", "Hold on")
-_NO_OBJECT = frozenset("your yours yourself yourselves on off up down out in it".split())
-
-
-def _commanded(sentence: str) -> bool:
-    """Whether a clause of the sentence is a command with an object ("sing a song", "Stoke the forge"): an
-    action on a thing, which no voice's edge drops (h235: a verb with an object is read or refused); or
-    the sentence is a word no lexicon of English forms knows, alone (a name)."""
-    if len(ws := re.findall(r"[a-z]+", sentence.lower())) == 1 and not english_lemmas(american(ws[0])):
-        return True  # a name alone, no sign-off's ("Ana"): it may name who acts, so it is read or refused
-    for clause in re.split(r"[,;:!?.]", sentence.lower()):
-        ws = re.findall(r"[a-z]+", clause)
-        if len(ws) >= 2 and "VERB" in english_lemmas(american(ws[0])) and ws[1] not in _NO_OBJECT:
-            return True
-    return False
-
 
 def _voice_edges(sentences: list[str]) -> set[int]:
     """The opening and closing sentences of a voice that name nothing (h281: "Bow to your partner!",
@@ -570,7 +516,8 @@ def _voice_edges(sentences: list[str]) -> set[int]:
     said = [
         empty(s, whole=True, header=k == 0, voice=True)
         and not named_alone(tuple(re.findall(r"[a-z]+", s.lower())))
-        and not _commanded(s)
+        and not voice_remarks.commanded(s)
+        or _remark(s)
         for k, s in enumerate(sentences)
     ]
     if all(said):
@@ -580,16 +527,30 @@ def _voice_edges(sentences: list[str]) -> set[int]:
     return set(range(first)) | set(range(last, len(said)))
 
 
+def _remark(sentence: str) -> bool:
+    """A voice's warning of nothing the scene has ("Mind the dog.") or its farewell ("Ta-ra.", h296)."""
+    warned = (voice_remarks.caution_of(sentence) or "").lower()
+    named = MEANING.search(warned) or _ACTION.search(warned)
+    return bool(warned and not named) or voice_remarks.farewell(sentence)
+
+
 def plain(sentences: list[str], dropped: list[str] | None = None) -> list[str]:
     """The sentences with empty fragments, start signals and a sign-off's name dropped, reported speech and
     first-person narration said as the team's commands (see the module docstring); what only the general
     filler rule dropped is added to `dropped`, where given."""
     out = []
-    sentences = unsigned(sentences, Dropped(dropped))
+    # "..., isn't it, pet?": a voice's closing tags (h296)
+    untagged = [voice_remarks.closing_tags(s) for s in unsigned(sentences, Dropped(dropped))]
+    sentences = [s for s, _ in untagged]
+    if dropped is not None:
+        dropped.extend(tag for _, tags in untagged for tag in tags)
     edges = _voice_edges(sentences)
     for k, sentence in enumerate(sentences):
         framed = frame_gone(sentence, Dropped(dropped), whole=True, header=k == 0, voice=k in edges)
-        if framed or _START_SIGNAL.match(sentence):
+        remark = not framed and k in edges and _remark(sentence)
+        if remark and dropped is not None:
+            dropped.append(sentence.strip(" .!?"))
+        if framed or remark or voice_remarks.start_signal(sentence):
             continue
         if k == 0 and _called(sentence.rstrip(" ,.!:")):  # a letter's greeting on its own: "Dear Sam,"
             continue

@@ -170,6 +170,7 @@ def _named_before(m: Marked, named_before: tuple[str, ...], match: re.Match[str]
 TARGET = r"(?:goal|target|placement|destination|assigned)"
 _COUNTS = {"two": "2", "three": "3", "four": "4"}
 _REGION = r"(?:region|area|zone|spot|cell|location)"
+_THAT = r"(?:that|this|those|these)\s+"
 OTHER_THAN = r"(?:other\s+than|except(?:\s+for)?|besides|apart\s+from|but|outside(?:\s+of)?)"
 
 
@@ -181,7 +182,8 @@ def _mark_target_complements(m: Marked) -> None:
         rf"(?:remaining|rest\s+of\s+the)\s+{PLACE_NOUN}\b"
     )
     targets = (
-        rf"(?:the\s+|their\s+|its\s+|an?\s+|one\s+of\s+the\s+)?(?:{TARGET}\s+{PLACE_NOUN}|targets?|goals?)\b"
+        # ("outside that target area", h296)
+        rf"(?:the\s+|their\s+|its\s+|an?\s+|one\s+of\s+the\s+|{_THAT})?(?:{TARGET}\s+{PLACE_NOUN}|targets?|goals?)\b"
     )
     complement = (
         rf"\b(?:the\s+|an?\s+)?(?:any\s+)?(?:other\s+)?(?:{PLACE_NOUN}|anywhere)\s+(?:{OTHER_THAN}|that\s+(?:is|are)\s+not)\s+"

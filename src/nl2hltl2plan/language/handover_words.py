@@ -5,7 +5,7 @@ rewrites that map a writer's variants onto the forms these classes read are in `
 
 VERB = (
     r"(?:transfer|move|put|place|bring|carry|take|deliver|relocate|shift|get|set|send|return|distribute|"
-    r"spread|position|drop|arrange|want|need|lay|deposit|pop|collect|gather)"
+    r"spread|position|drop|arrange|want|need|lay|deposit|pop|collect|gather|ferry|shuttle|haul|lug)"
 )
 PREP = r"(?:to|into|onto|on|in|at|towards?|over\s+to|in\s+to|on\s+to|among|across|over)"
 MOD = (
@@ -18,7 +18,7 @@ GERUND = (
 DONE = (
     r"(?:placed|put|moved|transferred|delivered|carried|brought|taken|shifted|relocated|returned|sent|"
     r"arranged|positioned|distributed|spread|done|handled|set|transfer|move|place|bring|carry|deposited|return|"
-    r"collected|gathered|"
+    r"collected|gathered|ferried|shuttled|hauled|lugged|"
     r"conveyed|returns|belongs?|rests?|travels?|"
     r"dropped|go|goes|going|end\s+up|ends\s+up|land|lands)"
 )
@@ -149,10 +149,19 @@ NEGATED_GERUNDS = {
 }
 
 # idioms of moving, said of the thing moved ("makes its way to", "find their way onto", "heads on over to",
-# "moseys on back to": "back" is kept, it says the place the thing left; "sets off for"): every reader reads
-# them as "goes to" / "goes" (a verb's tense and number change nothing a task needs)
-SET_OFF_FOR = r"\b(?:sets?|setting|heads?|heading)\s+off\s+(?:for|towards?)\b"
+# "moseys on back to": "back" is kept, it says the place the thing left; "sets off for", "are headed for",
+# h296): every reader reads them as "goes to" / "goes" (a verb's tense and number change nothing a task needs)
+SET_OFF_FOR = (
+    r"\b(?:(?:sets?|setting|heads?|heading)\s+off|(?:is|are)\s+(?:headed|heading))\s+(?:for|towards?)\b"
+)
+# a voice's steps of a dance or a stroll, said of the thing moved ("the yellow block dances to region I",
+# "promenade over to", "sashay off to"; h296)
+_STEPS = (
+    r"danc(?:es?|ing)|promenad(?:es?|ing)|sashay(?:s|ing)?|waltz(?:es|ing)?|glid(?:es?|ing)|hops?|hopping|"
+    r"strolls?|strolling|trots?|trotting|ambl(?:es?|ing)|saunter(?:s|ing)?"
+)
 WAY_IDIOM = (
     r"\b(?:(?:makes?|making|made|finds?|finding|found|wends?|wending)\s+(?:its|their)\s+way|heads?|heading|"
-    r"moseys?|moseying|cross(?:es)?|crossing)(?:\s+(?:on|over|off|along|across))*\s+(?=(?:back\s+)?(?:to|towards?|into|onto)\b)"
+    rf"moseys?|moseying|cross(?:es)?|crossing|{_STEPS})(?:\s+(?:on|over|off|along|across))*\s+"
+    r"(?=(?:back\s+)?(?:to|towards?|into|onto)\b)"
 )

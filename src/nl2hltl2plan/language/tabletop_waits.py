@@ -50,6 +50,19 @@ _WAIT_AFTER = re.compile(
     re.IGNORECASE | re.DOTALL,
 )
 _PLATE = re.compile(r"\b[a-z]+\s+plate\b", re.IGNORECASE)
+# a later stage said as a wait, at a sentence's start (h296): "Round two doesn't start till STATE: then REST",
+# "The second load waits till STATE; then REST" (the stage's own words name nothing of the scene), "Nobody
+# touches the carrot or the red apple till STATE; then REST" (REST places exactly the things not touched)
+_UNTIL = (
+    r"\s+(?:until|till|til)\s+(?P<state>[^,.;:!?]+?)\s*[,.;:!?]+\s*(?:and\s+)?(?:then\b|after\s+that\b)?\s*,?\s*"
+)
+_NOT_YET = r"(?:doesn't|does\s+not|don't|do\s+not|won't|can't|cannot)\s+(?:start|begin|happen)|waits?"
+_STAGE_WAITS = re.compile(
+    rf"(?P<start>^|(?<=[.;!?])\s+)(?:(?P<stage>(?:the\s+)?[a-z]+(?:\s+[a-z]+){{0,2}}?)\s+(?:{_NOT_YET})|"
+    r"(?:nobody|no\s+one|don't|do\s+not|never)\s+(?:touch(?:es)?|moves?|picks?\s+up|handles?|lifts?)\s+"
+    rf"(?P<things>[^,.;:!?]+?)){_UNTIL}(?P<rest>[^.;!?]+)",
+    re.IGNORECASE,
+)
 
 
 def plate_waits_read(text: str, kinds: dict[str, bool]) -> str:
@@ -67,6 +80,7 @@ def plate_waits_read(text: str, kinds: dict[str, bool]) -> str:
         named_twice = _names(after["rest"], kinds) & _names(after["state"], kinds)
         if plates and waited_for and not named_twice:
             return f"once {after['state']}, {after['rest']}."
+    text = _STAGE_WAITS.sub(lambda m: _stage_wait(m, kinds), text)
     before = _BEFORE_ANYTHING.match(text)
     if before is not None:
         plate = _plate(before["plate"] or before["plate2"], kinds)
@@ -92,3 +106,21 @@ def _names(text: str, kinds: dict[str, bool]) -> set[str]:
 def _only_on(rest: str, plate: str, kinds: dict[str, bool]) -> bool:
     """Does `rest` name the waiting plate and no other plate (every placement it makes is on it)?"""
     return _plates(rest, kinds) == {plate}
+
+
+def _stage_wait(wait: re.Match[str], kinds: dict[str, bool]) -> str:
+    """ "once STATE, REST" for a later stage said as a wait (`_STAGE_WAITS`), where that is all it says: the
+    stage's words name nothing, or the things not touched are the ones REST places; and REST places things."""
+    said = _names(wait["rest"], kinds)
+    waited = _names(wait["state"], kinds) or _REFERS.search(wait["state"])
+    if not any(not kinds[n] for n in said) or not waited:
+        return wait[0]
+    if wait["stage"] is not None and _names(wait["stage"], kinds):
+        return wait[0]
+    if wait["things"] is not None and _names(wait["things"], kinds) != {n for n in said if not kinds[n]}:
+        return wait[0]
+    return f"{wait['start']}once {wait['state']}, {wait['rest']}"
+
+
+# what the waited state may say in place of the things' names: "both of them are in", "those two are in"
+_REFERS = re.compile(r"\b(?:both|them|those|these|they|all)\b", re.IGNORECASE)
