@@ -375,6 +375,25 @@ _ASIDE_SENTENCE = re.compile(rf"{_OPENS}{courtesy_pattern('aside')}\s*[?.!:]+\s*
 _APOLOGY = re.compile(
     rf"{_OPENS}{courtesy_pattern('apology')}\s*(?:[?.!:]+|\s[-\u2013\u2014]+)\s*(?=\w)", re.I
 )
+# a bare apology closing a sentence, for how things are ("..., sorry!", "..., sorry - could the robot ...",
+# h295): nothing it could correct follows it, so it is no self-correction's "sorry"
+_APOLOGY_CLOSING = re.compile(
+    rf"\s*,?\s*\b{courtesy_pattern('apology_closing')}(?=\s*(?:[.!]+(?:\s|$)|$)|"
+    rf"\s*(?:,|\s[-\u2013\u2014]+)\s*{courtesy_pattern('apology_request')}\b)",
+    re.I,
+)
+
+
+def without_apologies(text: str) -> str:
+    """`text` without a bare apology that closes a sentence, for how things are, not for a step
+    (`apology_closing`, h295): it takes nothing back, so it is no self-correction's "sorry".
+
+    >>> without_apologies("Max knocked stuff over, sorry!! Could the robot put the mug in the sink?")
+    'Max knocked stuff over!! Could the robot put the mug in the sink?'
+    >>> without_apologies("Put the mug in the sink, sorry, the cup.")
+    'Put the mug in the sink, sorry, the cup.'
+    """
+    return _APOLOGY_CLOSING.sub("", text)
 
 
 def without_framing(text: str) -> str:

@@ -92,10 +92,12 @@ def _askless(word: str, names: frozenset[str], subject_done: bool) -> bool:
     kinds = categories(word) - {"person", "person_relation", "time"}
     if not kinds:
         return True
-    # (only its present tense, said of the subject: "is washed", "gets cleaned" ask for the task)
+    # (only its present tense, said of the subject: "is washed", "gets cleaned" ask for the task; a past
+    # tense only of a step no task takes: "Max walked!" tells of what someone did, h295)
     verbs = all(k.startswith("verb_") for k in kinds)
-    present = word.endswith("s") and any(lemma != word for lemma in english_lemmas(word).get("VERB", ()))
-    return verbs and present and subject_done
+    finite = any(lemma != word for lemma in english_lemmas(word).get("VERB", ())) and not word.endswith("ing")
+    stepped = kinds == {"verb_step"} and not word.endswith("s")
+    return verbs and finite and (word.endswith("s") or stepped) and subject_done
 
 
 def scene_remark(sentence: str, names: frozenset[str]) -> bool:
