@@ -396,6 +396,31 @@ def without_apologies(text: str) -> str:
     return _APOLOGY_CLOSING.sub("", text)
 
 
+# a channel's patter to its audience as a sentence of its own, or closing one after a comma or "and" (h295)
+_PATTER = re.compile(
+    rf"(?:{_OPENS}|(?<=:)\s*){courtesy_pattern('patter')}\s*(?:[.!?]+|$)\s*|"
+    rf"\s*,\s*(?:and\s+)?{courtesy_pattern('patter')}\s*(?=[.!?]|$)",
+    re.I,
+)
+# a record's credit, "Checked by: Dave." (a name of one to three words, initials too) where a sentence starts
+_CREDIT = re.compile(
+    rf"{_OPENS}[-\u2013\u2014]?\s*(?i:{courtesy_pattern('credit')})\s+by\s*:\s*"
+    r"[A-Z][A-Za-z'.-]*(?:\s+(?:(?:and|&|of)\s+)?[A-Z][A-Za-z'.-]*){0,3}\s*(?:[.!]+|$)\s*",
+)
+
+
+def without_patter(text: str) -> str:
+    """`text` without a channel's patter and a record's credit (`patter`, `credit`, h295): they name no
+    thing and ask the robot for nothing.
+
+    >>> without_patter("Put the book on the table. Smash that like button! Checked by: T. Ward.")
+    'Put the book on the table. '
+    """
+    for _ in range(2):  # a patter clause may close a patter sentence ("If you enjoyed this, rate and review")
+        text = _PATTER.sub(lambda m: m["lead"] or "", text)
+    return _CREDIT.sub(lambda m: m["lead"], text)
+
+
 def without_framing(text: str) -> str:
     """`text` without the framing a household request comes in that carries no task, no order and no
     negation: a relayed request's "Mom says", a "P.S.", a wish frame (a wished state is a goal), a sentence

@@ -19,6 +19,7 @@ import re
 from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import categories, word_categories
+from nl2hltl2plan.language.request_times import ordinal_date
 from nl2hltl2plan.language.spelling import american, english_lemmas, english_word
 
 
@@ -33,6 +34,7 @@ def _time() -> re.Pattern[str]:
     w = _words()
     days = "|".join(sorted(w["day"]))
     clock = r"\d{1,2}(?:[:.]\d\d)?\s*(?:am|pm|o'?clock)?|\d{4}\s*(?:hours|hrs)?"
+    clock = rf"{ordinal_date()}|{clock}"  # (a date by its ordinal: "the 14th", "night of the 3rd", h295)
     return re.compile(
         rf"(?:\b(?:{'|'.join(sorted(w['time_word']))})\s+)?(?:\b(?:this|next)\s+)?(?:{clock}|\b(?:{days})s?)\b",
         re.IGNORECASE,

@@ -101,6 +101,7 @@ class _Narration(NamedTuple):
     on_list: re.Pattern[str]  # a verb on the doer's list after "and", "then", a comma, before its object
     opening: re.Pattern[str]  # a story's opening ("Once upon a time, ...")
     asking: frozenset[str]  # a word before the doer that makes it no narration ("could the robot put")
+    tutor: re.Pattern[str]  # a tutorial's "then we hold ...", "now I take ..." (a verb in its base form)
 
 
 @lru_cache(maxsize=1)
@@ -113,12 +114,14 @@ def _narration() -> _Narration:
     thing += r"his|her|it|them|that|this|those|\d+)\b)"
     lead = r"(?P<lead>(?:\band|\bthen|,|\blast|\bfinally|\bnext)\s+(?:(?:then|last\s+of\s+all|finally)\s+)?)"
     opening = phrase_list_pattern("narration_words.txt", "opening")
+    tutor_after = "|".join(sorted(w["tutor_after"]))
     return _Narration(
         re.compile(rf"(?i)\b{doer}\s+{between}(?P<verb>[a-z]+)\b"),
         re.compile(rf"(?i)\b(?:{doer}|{pronoun})\s+{between}(?P<verb>[a-z]+)\b{thing}"),
         re.compile(rf"(?i){lead}(?P<verb>[a-z]+)\b{thing}"),
         re.compile(rf"(?i)(?:^|(?<=[.!?])\s+)(?:and\s+)?{opening}\b\s*,?\s*"),
         w["asking"],
+        re.compile(rf"(?i)\b(?P<lead>(?:{tutor_after})\s+)(?:{'|'.join(sorted(w['tutor']))})\s+(?P<verb>[a-z]+)\b{thing}"),
     )
 
 
@@ -152,11 +155,18 @@ def _past(verb: str) -> bool:
     return _action(word) is not None and word not in VERBS and not word.endswith("s")
 
 
+def _tutored(m: re.Match[str]) -> str:
+    """A tutorial's "then we hold ..." as "then hold ..." (only a verb's base form: "I took" is a report)."""
+    return m["lead"] + m["verb"] if _action(m["verb"]) == m["verb"].lower() else m[0]
+
+
 def narrated(text: str) -> str:
     """A narration of the robot's actions ("a robot put ... and carried ...", "the robot takes ..., sets it
-    down ...") as the commands it tells of; else `text`. A message is a narration when the robot (a noun
-    phrase ending in "robot") is the subject of a verb in its past or present tense ("tiptoed", "takes")."""
+    down ...") and a tutorial's own steps ("then we hold ...") as the commands they tell of; else `text`. A
+    message is a narration when the robot (a noun phrase ending in "robot") is the subject of a verb in its
+    past or present tense ("tiptoed", "takes")."""
     n = _narration()
+    text = n.tutor.sub(_tutored, text)
     told = any(_finite(m["verb"]) and _told(text, m) for m in n.teller.finditer(text))
     if not (told or any(_past(m["verb"]) and _told(text, m) for m in n.subject.finditer(text))):
         return text
