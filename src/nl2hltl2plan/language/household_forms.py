@@ -107,8 +107,10 @@ class _Narration(NamedTuple):
 @lru_cache(maxsize=1)
 def _narration() -> _Narration:
     w = word_categories("narration_words.txt")
-    doer = rf"(?:a|an|the|our|my|this|that|its)\s+(?:[a-z]+\s+){{0,2}}?(?:{'|'.join(sorted(w['doer']))})"
+    doer = rf"(?:a|an|the|our|my|this|that|its|your)\s+(?:[a-z]+\s+){{0,2}}?(?:{'|'.join(sorted(w['doer']))})"
     between = rf"(?P<between>(?:{'|'.join(sorted(w['between']))})\s+)?"
+    # (what the robot is about to do: "our robot is going to take ...", "the robot will put ...")
+    between += r"(?:(?:is|are)\s+(?:going\s+to|gonna|about\s+to)\s+|will\s+|['’]ll\s+)?"
     pronoun = "|".join(sorted(w["pronoun"]))
     thing = r"(?=(?:\s+(?:up|down|on|off|out|away|back))?\s+(?:the|a|an|one|two|three|some|both|another|its|"
     thing += r"his|her|it|them|that|this|those|\d+)\b)"
@@ -119,7 +121,7 @@ def _narration() -> _Narration:
         re.compile(rf"(?i)\b{doer}\s+{between}(?P<verb>[a-z]+)\b"),
         re.compile(rf"(?i)\b(?:{doer}|{pronoun})\s+{between}(?P<verb>[a-z]+)\b{thing}"),
         re.compile(rf"(?i){lead}(?P<verb>[a-z]+)\b{thing}"),
-        re.compile(rf"(?i)(?:^|(?<=[.!?])\s+)(?:and\s+)?{opening}\b\s*,?\s*"),
+        re.compile(rf"(?i)(?:^|(?<=[.!?])\s+)(?:and\s+)?(?:{opening}\b\s*,?\s*)+"),
         w["asking"],
         re.compile(rf"(?i)\b(?P<lead>(?:{tutor_after})\s+)(?:{'|'.join(sorted(w['tutor']))})\s+(?P<verb>[a-z]+)\b{thing}"),
     )
