@@ -20,7 +20,8 @@ BOTH = ([EGG, MUG], [("A", "B")], [])
     "text",
     [
         # a story's past tense, a verb no command form shares ("carried", "tucked")
-        "Once upon a time, a little robot carried the egg to the fridge, and then it tucked the mug in the sink.",
+        "Once upon a time, a little robot carried the egg to the fridge, and then it tucked the mug in the"
+        " sink.",
         # a commentator's present, "it" after the robot
         "The robot takes the egg to the fridge - lovely! Then it puts the mug in the sink.",
         # what the robot is about to do, after a show's opening
@@ -60,3 +61,9 @@ def test_a_multiplier_no_task_takes_is_refused() -> None:
         assert "x2" in str(refused)
         return
     assert any("x2" in u for u in unparsed), unparsed
+
+
+@pytest.mark.data
+def test_a_sorry_after_a_request_stays_a_correction_with_nothing_after_it() -> None:
+    with pytest.raises(Nl2Hltl2PlanError, match="sorry"):
+        read("Put the egg in the fridge, sorry")

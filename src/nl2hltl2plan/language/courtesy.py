@@ -384,16 +384,23 @@ _APOLOGY_CLOSING = re.compile(
 )
 
 
-def without_apologies(text: str) -> str:
-    """`text` without a bare apology that closes a sentence, for how things are, not for a step
-    (`apology_closing`, h295): it takes nothing back, so it is no self-correction's "sorry".
+def without_apologies(text: str, names_a_thing: Callable[[str], bool]) -> str:
+    """`text` without a bare apology that closes a sentence that names no thing, for how things are, not
+    for a step (`apology_closing`, h295): it takes nothing back, so it is no self-correction's "sorry". After
+    a request ("put the wine bottle in the fridge, sorry") it stays, a correction with nothing after it.
 
-    >>> without_apologies("Max knocked stuff over, sorry!! Could the robot put the mug in the sink?")
+    >>> mug = lambda said: "mug" in said
+    >>> without_apologies("Max knocked stuff over, sorry!! Could the robot put the mug in the sink?", mug)
     'Max knocked stuff over!! Could the robot put the mug in the sink?'
-    >>> without_apologies("Put the mug in the sink, sorry, the cup.")
-    'Put the mug in the sink, sorry, the cup.'
+    >>> without_apologies("Put the mug in the sink, sorry.", mug)
+    'Put the mug in the sink, sorry.'
     """
-    return _APOLOGY_CLOSING.sub("", text)
+
+    def dropped(m: re.Match[str]) -> str:
+        said = re.split(r"[.!?]\s", text[: m.start()])[-1]
+        return m[0] if names_a_thing(said) else ""
+
+    return _APOLOGY_CLOSING.sub(dropped, text)
 
 
 # a channel's patter to its audience as a sentence of its own, or closing one after a comma or "and" (h295)

@@ -175,7 +175,7 @@ class _HouseholdReader(SharedGrammar):
 
     def as_read(self, lines: list[str]) -> str:  # greetings and thanks as every reader drops them; the
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
-        said = without_patter(without_apologies(answered(" ".join(lines)))).strip()
+        said = without_patter(without_apologies(answered(" ".join(lines)), _names_a_thing)).strip()
         text = without_greetings(said, _names_a_thing)
         self.frames = []
         self.later_days = later_days_unread(text)
