@@ -37,7 +37,7 @@ from nl2hltl2plan.language.content_words import (
     stems,
     verb_places,
 )
-from nl2hltl2plan.language.counts import count_unread, count_value, counted
+from nl2hltl2plan.language.counts import count_unread, count_value, counted, multipliers_unread
 from nl2hltl2plan.language.grammar.everyday import everyday
 from nl2hltl2plan.language.grounding import (
     LAMPS,
@@ -493,7 +493,7 @@ def _words(
             unread = Unread(w, "condition", "a hedge: say whether it is to be done")
         if unread is not None:
             out.append(unread)
-    return out
+    return out + multipliers_unread(toks, mentions, parse)  # "pillows x2" (h295)
 
 
 def _locative_word(

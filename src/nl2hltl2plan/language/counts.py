@@ -207,3 +207,26 @@ def take_every_instance(
             kind = ("place_two" if held > 1 else "place") if t.kind in ("place", "place_two") else t.kind
             out[k] = t.model_copy(update={"kind": kind, "count": held})
     return out
+
+
+# a count said as a multiplier after the thing's name ("pillows x2", "candles x 2", h295)
+_MULTIPLIER = re.compile(r"[x×](\d{1,2})")
+
+
+def multipliers_unread(
+    toks: list[tuple[str, int, int]], mentions: list[Mention], parse: ParseUsage
+) -> list[Unread]:
+    """Each multiplier after a thing's name ("pillows x2") that no task on that thing takes: never left
+    unread as a word of no kind (a task on one pillow is no reading of "pillows x2")."""
+    out = []
+    for i, (word, _, _) in enumerate(toks):
+        times = _MULTIPLIER.fullmatch(word)
+        named = [m for m in mentions if m.end == i]
+        if times is None or not named:
+            continue
+        n, types = int(times[1]), set(named[-1].entry.types)
+        counts = [max(1, t.count) for t in parse.tasks if set(t.object) & types]
+        if counts and n not in counts:
+            why = f"the base tasks take {counts[0]}, not {n}"
+            out.append(Unread(f"{named[-1].surface} {word}", "count", why))
+    return out

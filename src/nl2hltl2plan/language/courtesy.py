@@ -379,6 +379,57 @@ _ASIDE_SENTENCE = re.compile(rf"{_OPENS}{courtesy_pattern('aside')}\s*[?.!:]+\s*
 _APOLOGY = re.compile(
     rf"{_OPENS}{courtesy_pattern('apology')}\s*(?:[?.!:]+|\s[-\u2013\u2014]+)\s*(?=\w)", re.I
 )
+# a bare apology closing a sentence, for how things are ("..., sorry!", "..., sorry - could the robot ...",
+# h295): nothing it could correct follows it, so it is no self-correction's "sorry"
+_APOLOGY_CLOSING = re.compile(
+    rf"\s*,?\s*\b{courtesy_pattern('apology_closing')}(?=\s*(?:[.!]+(?:\s|$)|$)|"
+    rf"\s*(?:,|\s[-\u2013\u2014]+)\s*{courtesy_pattern('apology_request')}\b)",
+    re.I,
+)
+
+
+def without_apologies(text: str, names_a_thing: Callable[[str], bool]) -> str:
+    """`text` without a bare apology that closes a sentence that names no thing, for how things are, not
+    for a step (`apology_closing`, h295): it takes nothing back, so it is no self-correction's "sorry". After
+    a request ("put the wine bottle in the fridge, sorry") it stays, a correction with nothing after it.
+
+    >>> mug = lambda said: "mug" in said
+    >>> without_apologies("Max knocked stuff over, sorry!! Could the robot put the mug in the sink?", mug)
+    'Max knocked stuff over!! Could the robot put the mug in the sink?'
+    >>> without_apologies("Put the mug in the sink, sorry.", mug)
+    'Put the mug in the sink, sorry.'
+    """
+
+    def dropped(m: re.Match[str]) -> str:
+        said = re.split(r"[.!?]\s", text[: m.start()])[-1]
+        return m[0] if names_a_thing(said) else ""
+
+    return _APOLOGY_CLOSING.sub(dropped, text)
+
+
+# a channel's patter to its audience as a sentence of its own, or closing one after a comma or "and" (h295)
+_PATTER = re.compile(
+    rf"(?:{_OPENS}|(?<=:)\s*){courtesy_pattern('patter')}\s*(?:[.!?]+|$)\s*|"
+    rf"\s*,\s*(?:and\s+)?{courtesy_pattern('patter')}\s*(?=[.!?]|$)",
+    re.I,
+)
+# a record's credit, "Checked by: Dave." (a name of one to three words, initials too) where a sentence starts
+_CREDIT = re.compile(
+    rf"{_OPENS}[-\u2013\u2014]?\s*(?i:{courtesy_pattern('credit')})\s+by\s*:\s*"
+    r"[A-Z][A-Za-z'.-]*(?:\s+(?:(?:and|&|of)\s+)?[A-Z][A-Za-z'.-]*){0,3}\s*(?:[.!]+|$)\s*",
+)
+
+
+def without_patter(text: str) -> str:
+    """`text` without a channel's patter and a record's credit (`patter`, `credit`, h295): they name no
+    thing and ask the robot for nothing.
+
+    >>> without_patter("Put the book on the table. Smash that like button! Checked by: T. Ward.")
+    'Put the book on the table. '
+    """
+    for _ in range(2):  # a patter clause may close a patter sentence ("If you enjoyed this, rate and review")
+        text = _PATTER.sub(lambda m: m["lead"] or "", text)
+    return _CREDIT.sub(lambda m: m["lead"], text)
 
 
 def without_framing(text: str) -> str:

@@ -36,7 +36,8 @@ from nl2hltl2plan.language.handover_discourse import (
 from nl2hltl2plan.language.request_times import timed_frame, times_dropped
 from nl2hltl2plan.language.spelling import english_word, known_word
 
-_SENTENCE_END = re.compile(r"(?<=[A-Za-z][.!?])\s+")  # not after a list's number ("1. Carrot ...")
+# not after a list's number ("1. Carrot ..."); after "!!" or "?!" too (h295)
+_SENTENCE_END = re.compile(r"(?<=[A-Za-z][.!?])\s+|(?<=[!?][.!?])\s+")
 # a record's kind and number opening the text ("Level 1:", "Cabin 4,"): a header unless the kind numbers
 # another part of the text too ("Task 1: ... Task 2: ...": the steps' labels)
 _NUMBERED = re.compile(r"^\s*(?:[A-Za-z]+\s+){0,2}?([A-Za-z]+)\s+(?:no\.?\s+|number\s+)?#?\d+\b")

@@ -19,6 +19,7 @@ import re
 from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import categories, word_categories
+from nl2hltl2plan.language.request_times import ordinal_date
 from nl2hltl2plan.language.spelling import american, english_lemmas, english_word
 
 
@@ -33,6 +34,7 @@ def _time() -> re.Pattern[str]:
     w = _words()
     days = "|".join(sorted(w["day"]))
     clock = r"\d{1,2}(?:[:.]\d\d)?\s*(?:am|pm|o'?clock)?|\d{4}\s*(?:hours|hrs)?"
+    clock = rf"{ordinal_date()}|{clock}"  # (a date by its ordinal: "the 14th", "night of the 3rd", h295)
     return re.compile(
         rf"(?:\b(?:{'|'.join(sorted(w['time_word']))})\s+)?(?:\b(?:this|next)\s+)?(?:{clock}|\b(?:{days})s?)\b",
         re.IGNORECASE,
@@ -92,10 +94,12 @@ def _askless(word: str, names: frozenset[str], subject_done: bool) -> bool:
     kinds = categories(word) - {"person", "person_relation", "time"}
     if not kinds:
         return True
-    # (only its present tense, said of the subject: "is washed", "gets cleaned" ask for the task)
+    # (only its present tense, said of the subject: "is washed", "gets cleaned" ask for the task; a past
+    # tense only of a step no task takes: "Max walked!" tells of what someone did, h295)
     verbs = all(k.startswith("verb_") for k in kinds)
-    present = word.endswith("s") and any(lemma != word for lemma in english_lemmas(word).get("VERB", ()))
-    return verbs and present and subject_done
+    finite = any(lemma != word for lemma in english_lemmas(word).get("VERB", ())) and not word.endswith("ing")
+    stepped = kinds == {"verb_step"} and not word.endswith("s")
+    return verbs and finite and (word.endswith("s") or stepped) and subject_done
 
 
 def scene_remark(sentence: str, names: frozenset[str]) -> bool:

@@ -144,10 +144,19 @@ def later_days_unread(text: str) -> list[Unread]:
 
 
 @lru_cache(maxsize=1)
+def ordinal_date() -> str:
+    """A date said by its ordinal ("the 14th", "night of the 3rd", "the 5th of May"; h295): a time, never a
+    count of things or a thing (the nightstand of "night of the 14th"), as a regular expression."""
+    w = {kind: "|".join(sorted(ws)) for kind, ws in _words().items()}
+    return rf"\b(?:(?:{w['part']})\s+of\s+)?the\s+\d{{1,2}}(?:st|nd|rd|th)(?:\s+of\s+(?:{w['month']}))?\b"
+
+
+@lru_cache(maxsize=1)
 def _time() -> re.Pattern[str]:
     w = {kind: "|".join(sorted(ws)) for kind, ws in _words().items()}
     when = rf"(?:{w['today']}|{w['when']}|{w['part']})s?"
     return re.compile(
+        rf"\b(?:(?:{w['opener']}|of)\s+)?{ordinal_date()}|"
         rf"\b(?:(?:{w['opener']})\s+)?(?:(?:the|this|next|last(?=\s+(?:{w['part']})))\s+)?{when}(?:\s+{when})*\b"
         rf"|\bby\s+\d{{1,2}}(?:[:.]\d\d)?\s*(?:am|pm|o'?clock)?(?=\s*(?:[,.!?;:]|$|please\b|{when}\b))",
         re.IGNORECASE,

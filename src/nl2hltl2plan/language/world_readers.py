@@ -38,8 +38,10 @@ from typing import Protocol
 from nl2hltl2plan.language.content_words import Unread, vocabulary
 from nl2hltl2plan.language.courtesy import (
     courtesy_unread,
+    without_apologies,
     without_framing,
     without_greetings,
+    without_patter,
     without_reasons,
 )
 from nl2hltl2plan.language.frame_drops import frames_dropped
@@ -173,7 +175,8 @@ class _HouseholdReader(SharedGrammar):
 
     def as_read(self, lines: list[str]) -> str:  # greetings and thanks as every reader drops them; the
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
-        text = without_greetings(answered(" ".join(lines)), _names_a_thing)
+        said = without_patter(without_apologies(answered(" ".join(lines)), _names_a_thing)).strip()
+        text = without_greetings(said, _names_a_thing)
         self.frames = []
         self.later_days = later_days_unread(text)
         text = frames_dropped(text, _thing_words(text), self.frames, times=True)
