@@ -31,7 +31,7 @@ BOTH = pytest.mark.parametrize("backend", ["offline", "grammar"])
     [
         ("put the pillow on the sofa and fluff it", "'fluff' (action)"),
         ("put the laptop on the coffee table, then polish it", "'polish' (action)"),
-        ("please hide the credit card in the box", "'hide' (action)"),
+        ("please glue the credit card in the box", "'glue' (action)"),  # ('hide' places: h295)
         ("put the laptop on the sofa and keep it away from the kids", "'kids' (place)"),
     ],
 )
