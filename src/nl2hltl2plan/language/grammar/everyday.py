@@ -357,7 +357,26 @@ def _as_well_as_doing(text: str) -> str:
     def one(m: re.Match[str]) -> str:
         return m[0] if _CLAUSE_FREED.search(text[: m.start()]) else ", and "
 
-    return _AS_WELL_AS_DOING.sub(one, text)
+    text = _AS_WELL_AS_DOING.sub(one, text)
+
+    def thing(m: re.Match[str]) -> str:
+        if _CLAUSE_FREED.search(text[: m.start()]):
+            return m[0]
+        if m["end"] is not None and not _PLACE_WORD.search(m["y"]):
+            return f", and {m['y']} too"
+        return f"{m[0][: m[0].index('as')].rstrip()} and {m['y'] or ''}"
+
+    return _AS_WELL_AS_THING.sub(thing, text)
+
+
+# "put two boxes on the table, as well as two tissue boxes": a thing joined to the task before, put where it
+# goes ("..., and two tissue boxes too"); "put X as well as Y on Z": "X and Y" (h293). Never a thing dropped
+_AS_WELL_AS_THING = re.compile(
+    r",?\s+as\s+well\s+as\s+(?=(?:the|a|an|two|three|four|\d+|some|both|my|another|one)\s)"
+    r"(?:(?P<y>[^.;!?,]+?)(?P<end>(?=\s*(?:[.;!?]|$))))?",
+    re.I,
+)
+_PLACE_WORD = re.compile(r"\b(?:on|onto|in|into|under|to|inside|next)\b", re.I)
 
 
 # "look at a credit card and then a phone under the floor lamp": the lamp of both, the second after the first
