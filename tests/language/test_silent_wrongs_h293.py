@@ -65,3 +65,17 @@ def test_as_well_as_joins_a_thing_and_a_counted_list_stays_a_list():
 def test_a_colour_in_a_verbless_list():
     res = read("FloorPlan413", "2 red cloths and 2 soaps on the toilet")
     assert said(res) == [("place_two", "Cloth", 2), ("place_two", "SoapBar", 2)]
+
+
+
+def test_a_container_chain_inside_a_longer_list_is_one_task():
+    # the chain as an item of a list, with its verb or without ("then a pen in a bowl and that one on P")
+    text = "put a pen in a bowl and the bowl on the coffee table, and a watch on the sofa"
+    res = read("FloorPlan201", text)
+    assert said(res) == [("place_in_container", "Pen", 1), ("place", "Watch", 1)] and not res.unparsed
+    text = (
+        "put a watch on the sofa and a pillow on the armchair, then a pen in a bowl and that one on the sofa"
+    )
+    res = read("FloorPlan201", text)
+    assert said(res) == [("place", "Watch", 1), ("place", "Pillow", 1), ("place_in_container", "Pen", 1)]
+    assert res.before == [("A", "C"), ("B", "C")] and not res.unparsed
