@@ -79,3 +79,12 @@ def test_a_container_chain_inside_a_longer_list_is_one_task():
     res = read("FloorPlan201", text)
     assert said(res) == [("place", "Watch", 1), ("place", "Pillow", 1), ("place_in_container", "Pen", 1)]
     assert res.before == [("A", "C"), ("B", "C")] and not res.unparsed
+
+
+def test_a_treatment_said_as_an_adjective_of_a_reference():
+    # "a rinsed one" after "two mugs"; "a warm slice" in a sentence after "slice a tomato"
+    res = read("FloorPlan12", "put 2 mugs in the sink, and a rinsed one in there too")
+    assert said(res) == [("place_two", "Mug", 2), ("clean_place", "Mug", 1)] and not res.unparsed
+    res = read("FloorPlan12", "slice a tomato. put a warm slice on the counter, a cold slice in the sink")
+    assert said(res) == [("heat_place", "Tomato", 1), ("cool_place", "Tomato", 1)]
+    assert all(t.sliced for t in res.tasks) and not res.unparsed

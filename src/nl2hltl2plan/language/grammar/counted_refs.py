@@ -34,6 +34,7 @@ import re
 from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import categories
+from nl2hltl2plan.language.grammar.word_tables import STATE_WORDS
 from nl2hltl2plan.language.grounding import LAMPS, Mention, find_mentions, plural_name, tokens
 
 _N = r"(?:two|three|four|five|both|2|3|4|5)"
@@ -103,7 +104,7 @@ def counted_references(text: str) -> str:
     """`text` with the counted and ordinal references above written out (a pure function of the text)."""
     text = _ONE_OF_N.sub(_count_of_those, text)
     rules = (_counts_after, _lamp_used, _counted_others, _counted_more, _other_unit)
-    for rule in (*rules, _rest, _other_one, _another):
+    for rule in (*rules, _rest, _other_one, _another, _treated_one, _slice_of_before):
         text = rule(text)
     return text
 
@@ -309,6 +310,42 @@ def _another(text: str) -> str:
         return _cased(said, m[0]) if set(noun.entry.types) & set(x.entry.types) else m[0]
 
     return _ANOTHER.sub(sub, text)
+
+
+# "2 sponges in the tub, and a rinsed one in there too": a treated one of the things just named (h293)
+_TREATED_ONE = re.compile(rf"\b(?P<a>a|an|one)\s+(?P<state>{'|'.join(sorted(STATE_WORDS))})\s+one\b", re.I)
+
+
+def _treated_one(text: str) -> str:
+    """ "a rinsed one" after "two sponges" (or "a sponge") -> "a rinsed sponge"."""
+
+    def sub(m: re.Match[str]) -> str:
+        x = _antecedent(text, m.start(), one_of=True)
+        return m[0] if x is None else f"{m['a']} {m['state']} {_singular(x, text)}"
+
+    return _TREATED_ONE.sub(sub, text)
+
+
+# "slice a tomato. i want a warm slice on the counter, a cold slice in the sink": a slice in a later sentence
+# is one of the thing sliced before ("a warm slice of tomato"), the one thing sliced (h293)
+_SLICING = re.compile(r"\b(?:slice|cut|chop)\s+(?:up\s+)?(?:a|an|the|one|my)\s+(?=[a-z])", re.I)
+_SLICE_SAID = re.compile(
+    rf"\b(?P<a>a|an|one|another)\s+(?P<state>(?:{'|'.join(sorted(STATE_WORDS))})\s+)?(?:slice|piece)\b(?!\s+of\b)",
+    re.I,
+)
+
+
+def _slice_of_before(text: str) -> str:
+    """ "a (warm) slice" in a sentence after "slice a tomato" -> "a (warm) slice of tomato"."""
+    sliced = [x for m in _SLICING.finditer(text) if (x := _noun_at(text, m.end())) is not None]
+    if not sliced or len({x.entry.canonical for x in sliced}) != 1:
+        return text
+    end = re.compile(r"[.;!?]\s").search(text, sliced[0].char_end)
+    if end is None:
+        return text
+    of = sliced[0].surface
+    rest = _SLICE_SAID.sub(lambda m: f"{m['a']} {m['state'] or ''}slice of {of}", text[end.end() :])
+    return text[: end.end()] + rest
 
 
 def _after_place(text: str, at: int) -> bool:
