@@ -88,3 +88,10 @@ def test_a_treatment_said_as_an_adjective_of_a_reference():
     res = read("FloorPlan12", "slice a tomato. put a warm slice on the counter, a cold slice in the sink")
     assert said(res) == [("heat_place", "Tomato", 1), ("cool_place", "Tomato", 1)]
     assert all(t.sliced for t in res.tasks) and not res.unparsed
+
+
+def test_a_list_led_by_its_topic_or_by_counts_with_their_noun_left_out():
+    res = read("FloorPlan201", "credit cards: two go on the sofa, and one on the armchair")
+    assert said(res) == [("place_two", "CreditCard", 2), ("place", "CreditCard", 1)] and not res.unparsed
+    res = read("FloorPlan201", "put two credit cards on the sofa, one on the armchair")
+    assert said(res) == [("place_two", "CreditCard", 2), ("place", "CreditCard", 1)] and not res.unparsed

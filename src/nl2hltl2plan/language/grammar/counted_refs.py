@@ -74,7 +74,7 @@ ONE_MORE = r"one\s+more\b(?!\s+(?:time|step|thing|task|minute|second)s?\b)"
 # any time": tasks counted by their place in the list (`order_remarks`)
 _ANOTHER = re.compile(
     r"\b(?:the\s+(?:second|third|fourth|fifth|last)(?!\s+(?:two|three|2|3)\s+(?:can|in|ones|tasks|jobs|things)\b)"
-    r"|(?:a|one)\s+(?:second|third|fourth|fifth)(?=\s+one\b)"
+    r"|(?:a|one)\s+(?:second|third|fourth|fifth)(?=\s+one\b)|another(?=\s+one\b)"
     rf"|{ONE_MORE})(?:\s+one\b)?",
     re.I,
 )
