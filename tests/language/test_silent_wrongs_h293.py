@@ -95,3 +95,14 @@ def test_a_list_led_by_its_topic_or_by_counts_with_their_noun_left_out():
     assert said(res) == [("place_two", "CreditCard", 2), ("place", "CreditCard", 1)] and not res.unparsed
     res = read("FloorPlan201", "put two credit cards on the sofa, one on the armchair")
     assert said(res) == [("place_two", "CreditCard", 2), ("place", "CreditCard", 1)] and not res.unparsed
+
+
+def test_references_between_tasks():
+    # "wash one more and put it ...": another cloth, not the first one again; "when the rest is done": after
+    # every task said before
+    text = "rinse a mug and put it in the sink, then rinse one more and put it in the cabinet"
+    res = read("FloorPlan12", text)
+    assert said(res) == [("clean_place", "Mug", 1), ("clean_place", "Mug", 1)] and res.before == [("A", "B")]
+    text = "put a watch on the sofa and a pen on the coffee table, and when the rest is done put a vase there"
+    res = read("FloorPlan201", text)
+    assert res.before == [("A", "C"), ("B", "C")] and not res.unparsed

@@ -138,10 +138,15 @@ def another_said(text: str) -> str:
         if joined and m["alone"] is not None:
             return "one more"
         if m[0][:1].lower() == "o" and not (joined and joined[1].lower() == "then"):
-            return _cased("another", m[0])
+            # "then wash one more and put it ...": its noun left out, the thing named last (h293)
+            x = _antecedent(text, m.start(), one_of=False) if _NOUN_LEFT.match(text, m.end()) else None
+            return _cased("another" + (f" {_singular(x, text)}" if x is not None else ""), m[0])
         return m[0]
 
     return _ANOTHER_SAID.sub(sub, text)
+
+
+_NOUN_LEFT = re.compile(r"\s+and\s+(?:put|place|set|leave|stick|drop)\b", re.I)
 
 
 def _things(text: str) -> list[Mention]:
