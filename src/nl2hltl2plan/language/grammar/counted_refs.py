@@ -307,6 +307,8 @@ def _another(text: str) -> str:
         x = _antecedent(text, m.start(), one_of=elided)
         if x is None or _after_place(text, m.start()):
             return m[0]
+        if m[0].lower().startswith("another") and _sliced_before(text, x):
+            return m[0]  # "heat an apple slice ..., then heat another one": a slice, the grammar's to read
         # "the second fork": "a second fork" (the word said stays); "the last one", "one more": another
         ordinal = m[0].split()[1].lower() if m[0].lower().startswith(("the ", "a ")) else "last"
         said = "another" if ordinal == "last" else f"a {ordinal}"
@@ -335,13 +337,14 @@ def _treated_one(text: str) -> str:
 # is one of the thing sliced before ("a warm slice of tomato"), the one thing sliced (h293)
 _SLICING = re.compile(r"\b(?:slice|cut|chop)\s+(?:up\s+)?(?:a|an|the|one|my)\s+(?=[a-z])", re.I)
 _SLICE_SAID = re.compile(
-    rf"\b(?P<a>a|an|one|another)\s+(?P<state>(?:{'|'.join(sorted(STATE_WORDS))})\s+)?(?:slice|piece)\b(?!\s+of\b)",
+    rf"\b(?P<a>a|an|one|another)\s+(?P<state>(?:{'|'.join(sorted(STATE_WORDS))})\s+)(?:slice|piece)\b(?!\s+of\b)",
     re.I,
 )
 
 
 def _slice_of_before(text: str) -> str:
-    """ "a (warm) slice" in a sentence after "slice a tomato" -> "a (warm) slice of tomato"."""
+    """ "a warm slice" in a sentence after "slice a tomato" -> "a warm slice of tomato" (a plain "a slice" is
+    the grammar's own, which reads it with what it knows of the slices said)."""
     sliced = [x for m in _SLICING.finditer(text) if (x := _noun_at(text, m.end())) is not None]
     if not sliced or len({x.entry.canonical for x in sliced}) != 1:
         return text
@@ -349,7 +352,7 @@ def _slice_of_before(text: str) -> str:
     if end is None:
         return text
     of = sliced[0].surface
-    rest = _SLICE_SAID.sub(lambda m: f"{m['a']} {m['state'] or ''}slice of {of}", text[end.end() :])
+    rest = _SLICE_SAID.sub(lambda m: f"{m['a']} {m['state']}slice of {of}", text[end.end() :])
     return text[: end.end()] + rest
 
 

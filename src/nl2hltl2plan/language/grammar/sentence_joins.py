@@ -284,7 +284,7 @@ def both_containers_moved(text: str) -> str:
 _CHAIN_THEN_LIST = re.compile(
     r"(?P<chain>\bput\s+(?:a|an|the|one)\s+(?:[a-z]+\s+){0,2}?(?:in|into|on|onto|inside)\s+(?:a|an|one)\s+"
     r"(?P<c>[a-z]+(?:\s+[a-z]+)?)\s+and\s+put\s+(?:the|that)\s+(?P=c)\s+(?:on|onto|in|into|to)\s+(?:the|a|an)\s+"
-    r"[a-z]+(?:\s+[a-z]+){0,2}?)\s*,\s*(?:and\s+)?(?=(?:a|an|the|one|two|three|\d+|another|then|also)\s)",
+    r"[a-z]+(?:\s+[a-z]+){0,2}?)\s*,\s*(?:and\s+)?(?=(?:a|an|the|one|two|three|\d+|another)\s)",
     re.I,
 )
 
