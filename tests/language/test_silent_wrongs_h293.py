@@ -106,3 +106,9 @@ def test_references_between_tasks():
     text = "put a watch on the sofa and a pen on the coffee table, and when the rest is done put a vase there"
     res = read("FloorPlan201", text)
     assert res.before == [("A", "C"), ("B", "C")] and not res.unparsed
+
+
+def test_a_misspelt_plural_is_respelt_as_a_plural():
+    # "sptulas" is near "spatula": respelt as the one name it would lose its count (FloorPlan5 holds 3)
+    with pytest.raises(HTTError, match=r"^'spatulas': FloorPlan5 has 3 of them"):
+        read("FloorPlan5", "put the sptulas in the drawer")
