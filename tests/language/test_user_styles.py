@@ -385,15 +385,7 @@ KNOWN_WRONG: set[str] = {
     "lamp.",
     "What's up everyone, bathroom hack number one: put two rolls of toilet paper on the back of the toilet. "
     "Hack number two: rinse a bar of soap and toss it in the bin. Links in the description!",
-    # h284's held-out plain-user set (scored once at 88e8a7c7, results/language/h284.md): a misspelt bare
-    # plural read as one; "A and B ... in that order, and C whenever" gives no order; a task dropped after
-    # "as well as"
-    "need the tisue boxes on the coffee table pls",
-    "can u look at the box and a pillow under the lamp in that order, and put an alarm clock on the desk "
-    "whenever",
-    "Please put a candle in a box and put that box on the coffee table. Then put two more boxes on the "
-    "coffee table, as well as two boxes of tissues. Lastly, two remote controls on the armchair, if you "
-    "would.",
+    # (h284's three wrong lines of users_h284 read right or are refused by name since h293)
     # h297's held-out red team (trust/redteam_h297held, scored once at 6b0198d1, results/language/h297.md):
     # a drink said by its glass read as the glass (or the bottle); "the remaining eggs" with none said before
     "put a glass of wine on the dining table",

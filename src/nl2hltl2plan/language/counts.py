@@ -230,3 +230,24 @@ def multipliers_unread(
             why = f"the base tasks take {counts[0]}, not {n}"
             out.append(Unread(f"{named[-1].surface} {word}", "count", why))
     return out
+
+
+_ONE_SAID = re.compile(r"\b(?:one|single)\b", re.I)
+
+
+def plural_as_one(
+    instruction: str, m: Mention, tasks: Sequence[BaseTaskSpec], instances: Mapping[str, int], scene: str
+) -> None:
+    """A bare plural (`m`) that is the only word of the text naming its types, read as the one task of
+    that type taking one whole thing where the scene holds more ("need the tisue boxes on the table" read
+    as one box, h293): the plural lost in the reading, refused naming it, whichever backend read it. Not
+    "the apples ... a slice", "the forks ... a fork" nor "the spoons. put one ...": a word names the one."""
+    alone = all(o.char_start == m.char_start or not set(o.entry.types) & set(m.entry.types)
+                for o in find_mentions(instruction)) and not _ONE_SAID.search(instruction, m.char_end)
+    mine = [t for t in tasks if set(t.object) & set(m.entry.types)]
+    total = sum(instances.get(t, 0) for t in m.entry.types)
+    if alone and len(mine) == 1 and mine[0].count == 1 and not mine[0].sliced and total > 1:
+        raise HTTError(
+            f"{m.surface!r}: {scene} has {total} of them and the task would take 1 (a plural read as one): "
+            f"say how many ('two {m.surface}', 'all the {m.surface}'), or 'the {m.entry.phrase}' for one"
+        )

@@ -34,7 +34,7 @@ from functools import lru_cache
 from nl2hltl2plan.domain.plurals import Plurals
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.content_words import DETERMINERS, LOCATIVE, categories, word_categories
-from nl2hltl2plan.language.counts import count_value
+from nl2hltl2plan.language.counts import count_value, plural_as_one
 from nl2hltl2plan.language.grammar.counted_refs import ONE_MORE, counted_references
 from nl2hltl2plan.language.grammar.use_names import named_by_use
 from nl2hltl2plan.language.grounding import (
@@ -49,6 +49,7 @@ from nl2hltl2plan.language.grounding import (
     role_swap_conflict,
     tokens,
 )
+from nl2hltl2plan.language.spelling import respelt
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
 from nl2hltl2plan.language.type_choice import text_decides
 from nl2hltl2plan.language.unsupported_steps import PICKS_ONE
@@ -81,8 +82,8 @@ def check_referents(
     fewer things than the scene holds where no convention of the world reads it (see the module's
     docstring); returns the assumptions a convention made ("'the forks': read as 2 of ...").
     `forbidden`: the types the instruction's negations act on ("don't touch the towel")."""
-    # "remotes, two of them": "two remotes" (h185); "the cup for coffee": "the mug" (h195), as the grammar
-    instruction = named_by_use(counted_references(instruction))
+    # as the grammar reads it: "remotes, two of them" (h185), "the cup for coffee" (h195), "the tisue boxes"
+    instruction = named_by_use(counted_references(respelt(instruction)))
     scopes = mention_scopes(instruction, tasks)  # both checks below ask each word's tasks
     decided = exact_names(instruction, tasks, instances, scene, forbidden, scopes)
     moved_twice(instruction, tasks, before)
@@ -499,8 +500,8 @@ def plural_of_several(
             continue
         for task in tasks:
             types = set(task.object) & set(m.entry.types)
-            read_by = convention if applies else None
-            said += _not_several(instruction, m, [task], types, instances, scene, read_by)
+            said += _not_several(instruction, m, [task], types, instances, scene, (None, convention)[applies])
+        plural_as_one(instruction, m, tasks, instances, scene)
     return list(dict.fromkeys(said))
 
 

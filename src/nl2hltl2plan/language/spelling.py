@@ -173,7 +173,13 @@ def spelt_name(word: str) -> str | None:
         return None
     if low in _english():
         return None
-    return scored[0][1]
+    best = scored[0][1]
+    # "sptulas" is near "spatula", and a plural respelt as one name would lose its count (h293): its stem
+    # spells the name, said as a plural, or the word is left as written (check 1 names it)
+    plural = low.endswith("s") and not low.endswith("ss") and not best.endswith("s")
+    if plural and low[:-1] not in _known_words():
+        return _spelt_plural(low)
+    return best
 
 
 def _spelt_plural(low: str) -> str | None:

@@ -34,6 +34,7 @@ import re
 from functools import lru_cache
 
 from nl2hltl2plan.language.content_words import categories
+from nl2hltl2plan.language.grammar.word_tables import STATE_WORDS
 from nl2hltl2plan.language.grounding import LAMPS, Mention, find_mentions, plural_name, tokens
 
 _N = r"(?:two|three|four|five|both|2|3|4|5)"
@@ -73,7 +74,7 @@ ONE_MORE = r"one\s+more\b(?!\s+(?:time|step|thing|task|minute|second)s?\b)"
 # any time": tasks counted by their place in the list (`order_remarks`)
 _ANOTHER = re.compile(
     r"\b(?:the\s+(?:second|third|fourth|fifth|last)(?!\s+(?:two|three|2|3)\s+(?:can|in|ones|tasks|jobs|things)\b)"
-    r"|(?:a|one)\s+(?:second|third|fourth|fifth)(?=\s+one\b)"
+    r"|(?:a|one)\s+(?:second|third|fourth|fifth)(?=\s+one\b)|another(?=\s+one\b)"
     rf"|{ONE_MORE})(?:\s+one\b)?",
     re.I,
 )
@@ -103,7 +104,7 @@ def counted_references(text: str) -> str:
     """`text` with the counted and ordinal references above written out (a pure function of the text)."""
     text = _ONE_OF_N.sub(_count_of_those, text)
     rules = (_counts_after, _lamp_used, _counted_others, _counted_more, _other_unit)
-    for rule in (*rules, _rest, _other_one, _another):
+    for rule in (*rules, _rest, _other_one, _another, _treated_one, _slice_of_before):
         text = rule(text)
     return text
 
@@ -137,10 +138,15 @@ def another_said(text: str) -> str:
         if joined and m["alone"] is not None:
             return "one more"
         if m[0][:1].lower() == "o" and not (joined and joined[1].lower() == "then"):
-            return _cased("another", m[0])
+            # "then wash one more and put it ...": its noun left out, the thing named last (h293)
+            x = _antecedent(text, m.start(), one_of=False) if _NOUN_LEFT.match(text, m.end()) else None
+            return _cased("another" + (f" {_singular(x, text)}" if x is not None else ""), m[0])
         return m[0]
 
     return _ANOTHER_SAID.sub(sub, text)
+
+
+_NOUN_LEFT = re.compile(r"\s+and\s+(?:put|place|set|leave|stick|drop)\b", re.I)
 
 
 def _things(text: str) -> list[Mention]:
@@ -301,6 +307,8 @@ def _another(text: str) -> str:
         x = _antecedent(text, m.start(), one_of=elided)
         if x is None or _after_place(text, m.start()):
             return m[0]
+        if m[0].lower().startswith("another") and _sliced_before(text, x):
+            return m[0]  # "heat an apple slice ..., then heat another one": a slice, the grammar's to read
         # "the second fork": "a second fork" (the word said stays); "the last one", "one more": another
         ordinal = m[0].split()[1].lower() if m[0].lower().startswith(("the ", "a ")) else "last"
         said = "another" if ordinal == "last" else f"a {ordinal}"
@@ -309,6 +317,43 @@ def _another(text: str) -> str:
         return _cased(said, m[0]) if set(noun.entry.types) & set(x.entry.types) else m[0]
 
     return _ANOTHER.sub(sub, text)
+
+
+# "2 sponges in the tub, and a rinsed one in there too": a treated one of the things just named (h293)
+_TREATED_ONE = re.compile(rf"\b(?P<a>a|an|one)\s+(?P<state>{'|'.join(sorted(STATE_WORDS))})\s+one\b", re.I)
+
+
+def _treated_one(text: str) -> str:
+    """ "a rinsed one" after "two sponges" (or "a sponge") -> "a rinsed sponge"."""
+
+    def sub(m: re.Match[str]) -> str:
+        x = _antecedent(text, m.start(), one_of=True)
+        return m[0] if x is None else f"{m['a']} {m['state']} {_singular(x, text)}"
+
+    return _TREATED_ONE.sub(sub, text)
+
+
+# "slice a tomato. i want a warm slice on the counter, a cold slice in the sink": a slice in a later sentence
+# is one of the thing sliced before ("a warm slice of tomato"), the one thing sliced (h293)
+_SLICING = re.compile(r"\b(?:slice|cut|chop)\s+(?:up\s+)?(?:a|an|the|one|my)\s+(?=[a-z])", re.I)
+_SLICE_SAID = re.compile(
+    rf"\b(?P<a>a|an|one|another)\s+(?P<state>(?:{'|'.join(sorted(STATE_WORDS))})\s+)(?:slice|piece)\b(?!\s+of\b)",
+    re.I,
+)
+
+
+def _slice_of_before(text: str) -> str:
+    """ "a warm slice" in a sentence after "slice a tomato" -> "a warm slice of tomato" (a plain "a slice" is
+    the grammar's own, which reads it with what it knows of the slices said)."""
+    sliced = [x for m in _SLICING.finditer(text) if (x := _noun_at(text, m.end())) is not None]
+    if not sliced or len({x.entry.canonical for x in sliced}) != 1:
+        return text
+    end = re.compile(r"[.;!?]\s").search(text, sliced[0].char_end)
+    if end is None:
+        return text
+    of = sliced[0].surface
+    rest = _SLICE_SAID.sub(lambda m: f"{m['a']} {m['state']}slice of {of}", text[end.end() :])
+    return text[: end.end()] + rest
 
 
 def _after_place(text: str, at: int) -> bool:

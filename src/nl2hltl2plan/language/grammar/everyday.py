@@ -294,7 +294,7 @@ def everyday(text: str) -> str:
         text = _PUT_THEM_THERE.sub("", text)
     text = _THEN_UNDER_LAMP.sub(_each_under_lamp, text)
     text = places_named_again(text)  # "there", "on it", "that table", "along with" (places_again.py)
-    text = _COUNT_LEFT.sub(_count_named, text)
+    text = _COUNT_LEFT.sub(_count_named, _TOPIC.sub(_topic_counted, text))
     text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", text)
     text = _ORDER_THO.sub(_order_tho, text)
     text = _DONE_AT_END.sub(_done_at_end, text)
@@ -357,7 +357,26 @@ def _as_well_as_doing(text: str) -> str:
     def one(m: re.Match[str]) -> str:
         return m[0] if _CLAUSE_FREED.search(text[: m.start()]) else ", and "
 
-    return _AS_WELL_AS_DOING.sub(one, text)
+    text = _AS_WELL_AS_DOING.sub(one, text)
+
+    def thing(m: re.Match[str]) -> str:
+        if _CLAUSE_FREED.search(text[: m.start()]):
+            return m[0]
+        if m["end"] is not None and not _PLACE_WORD.search(m["y"]):
+            return f", and {m['y']} too"
+        return f"{m[0][: m[0].index('as')].rstrip()} and {m['y'] or ''}"
+
+    return _AS_WELL_AS_THING.sub(thing, text)
+
+
+# "put two boxes on the table, as well as two tissue boxes": a thing joined to the task before, put where it
+# goes ("..., and two tissue boxes too"); "put X as well as Y on Z": "X and Y" (h293). Never a thing dropped
+_AS_WELL_AS_THING = re.compile(
+    r",?\s+as\s+well\s+as\s+(?=(?:the|a|an|two|three|four|\d+|some|both|my|another|one)\s)"
+    r"(?:(?P<y>[^.;!?,]+?)(?P<end>(?=\s*(?:[.;!?]|$))))?",
+    re.I,
+)
+_PLACE_WORD = re.compile(r"\b(?:on|onto|in|into|under|to|inside|next)\b", re.I)
 
 
 # "look at a credit card and then a phone under the floor lamp": the lamp of both, the second after the first
@@ -391,7 +410,7 @@ def _each_under_lamp(m: re.Match[str]) -> str:
 # on the sofa and two on the armchair": a count whose noun is left out counts the thing named last before it,
 # which is written out ("two more spray bottles"); with none, or one that has no plural form, it stays
 _COUNT_LEFT = re.compile(
-    r"\b(?P<count>(?:one|two|three)\s+more|a\s+(?:third|fourth)(?:\s+one)?|(?<=\band\s)(?:one|two|three))"
+    r"\b(?P<count>(?:one|two|three)\s+more|a\s+(?:third|fourth)(?:\s+one)?|(?:(?<=\band\s)|(?<=,\s))(?:one|two|three))"
     r"(?=\s+(?:in|into|inside|on|onto|to|under|next\s+to|there)\b|\s*(?:[,.;!?]|$|too\b|as\s+well\b))",
     re.I,
 )
@@ -399,6 +418,24 @@ _COUNT_LEFT = re.compile(
 # moved ("of" only after a part: "the back of the toilet"; "two of the bottles" counts bottles)
 _PLACE_WORDS = frozenset("in into inside on onto to under at by near from beside behind next with".split())
 _PARTS = frozenset("back top side edge front lid bottom end".split())
+
+
+# a topic that heads a list of counts ("sponges: wash one and put it in the tub, ...", "tissue boxes: two go
+# in the trash, two on ..."): its first count whose noun is left out names it, and the heading goes (h293);
+# the counts after it count the thing named last (`_COUNT_LEFT`)
+_TOPIC = re.compile(
+    r"(?:^|(?<=[.;!?]\s))(?P<topic>[a-z]+(?:\s+[a-z]+)?)\s*:\s*(?P<pre>(?:[a-z]+\s+)?)"
+    r"(?P<n>one|two|three)\b(?!\s+(?:of|more)\b)(?=\s+(?:go|goes|in|into|on|onto|and)\b|\s*,)",
+    re.I,
+)
+
+
+def _topic_counted(m: re.Match[str]) -> str:
+    named = find_mentions(m["topic"])
+    if len(named) != 1 or not named[0].plural or named[0].char_end != len(m["topic"]) or named[0].char_start:
+        return m[0]
+    noun = named[0].entry.phrase if m["n"].lower() == "one" else named[0].surface
+    return f"{m['pre']}{m['n']} {noun}"
 
 
 def _count_named(m: re.Match[str]) -> str:

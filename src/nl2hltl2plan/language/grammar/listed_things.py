@@ -102,7 +102,8 @@ def merge_items(items: list[Item], b: TaskBuilder) -> list[Item]:
             return items
         xo.count = 2
         return [Item(obj=xo, pps=dests or x.pps)]
-    if xo.is_movable_receptacle() != yo.is_movable_receptacle():
+    # "two boxes and two candles": a list, as a container holds one thing here (h293)
+    if xo.is_movable_receptacle() != yo.is_movable_receptacle() and xo.count == yo.count == 1:
         cont, content = (xo, yo) if xo.is_movable_receptacle() else (yo, xo)
         assert cont.entry is not None and content.entry is not None
         # "the pan and the knife": the knife in the pan; "the mug and the apple": two things (a mug holds

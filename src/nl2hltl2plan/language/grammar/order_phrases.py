@@ -433,9 +433,19 @@ _FIRST_AND_LAST = re.compile(
     re.IGNORECASE,
 )
 
+# "look at the box and a pillow in that order, and put a clock on the desk": "in that order" closes the
+# clauses before it, and what follows is a sentence of its own (its order free, or said by its own words)
+_IN_ORDER_MID = re.compile(
+    r"(?<=[a-z]\s)(?P<said>in\s+(?:that|this|the\s+same|the\s+given|the\s+listed)\s+(?:order|sequence))"
+    r"\s*[,;]\s*(?:and\s+)?(?!(?:please|pls|thanks|thank|ok|okay|thx|cheers)\b)(?=[a-z])",
+    re.IGNORECASE,
+)
+
 
 def closing_orders(text: str) -> str:
-    """ "..., the egg before the apple" / "..., but do the egg first" -> a sentence of its own."""
+    """ "..., the egg before the apple" / "..., but do the egg first" -> a sentence of its own; so is what
+    follows a mid-sentence "in that order"."""
+    text = _IN_ORDER_MID.sub(lambda m: f"{m['said']}. ", text)
     text = _FIRST_AND_LAST.sub(lambda m: f"{m['lead']}Do {m['a']} first. Do {m['b'] or m['b2']} last", text)
     text = _CLOSING_RELATION.sub(lambda m: f". {m['a']} should be done {m['rel']} {m['b']}", text)
     return _CLOSING_FIRST.sub(lambda m: f". {m['s']}", text)

@@ -278,8 +278,42 @@ def both_containers_moved(text: str) -> str:
     return _BOTH_MOVED.sub(one, text)
 
 
+# "put a candle on a plate and put the plate on the table, a tissue box on the table too, and ...": the chain
+# is one task, and the list after it a sentence of its own (the clause rules read the chain only as a whole
+# sentence, and split it on "the plate" inside a longer list; h293)
+_CHAIN_THEN_LIST = re.compile(
+    r"(?P<chain>\bput\s+(?:a|an|the|one)\s+(?:[a-z]+\s+){0,2}?(?:in|into|on|onto|inside)\s+(?:a|an|one)\s+"
+    r"(?P<c>[a-z]+(?:\s+[a-z]+)?)\s+and\s+put\s+(?:the|that)\s+(?P=c)\s+(?:on|onto|in|into|to)\s+(?:the|a|an)\s+"
+    r"[a-z]+(?:\s+[a-z]+){0,2}?)\s*,\s*(?:and\s+)?(?=(?:a|an|the|one|two|three|\d+|another)\s)",
+    re.I,
+)
+
+
 def container_steps(text: str) -> str:
     """The text with a thing put in a container and the container moved said as the one task the rules read
-    (`container_again`, `both_containers_moved`, `container_moved_on`): "the keys go in the box, and the box
-    goes on the sofa". `sentences.normalize` calls it after `supply_put` has written the left-out verbs."""
-    return container_moved_on(both_containers_moved(container_again(text)))
+    (`container_again`, `both_containers_moved`, `container_moved_on`, `_CHAIN_THEN_LIST`): "the keys go in
+    the box, and the box goes on the sofa". `sentences.normalize` calls it after `supply_put` has written the
+    left-out verbs."""
+    text = container_moved_on(both_containers_moved(container_again(text)))
+    return _CHAIN_THEN_LIST.sub(lambda m: f"{m['chain']}. ", _VERBLESS_CHAIN.sub(_chain_said, text))
+
+
+# the same chain with its verbs left out, an item of a list with verbs ("wash an apple ..., another apple in
+# a pot and the pot on the counter, chill the mug ..."): said with its verbs, a sentence of its own
+_VERBLESS_CHAIN = re.compile(
+    r",\s*(?:and\s+)?(?P<then>then\s+)?(?P<x>(?:a|an|another|one)\s+(?:[a-z]+\s+){0,2}?)"
+    r"(?P<p>in|into|on|onto|inside)\s+(?P<c1>(?:a|an|one|another)\s+(?P<c>[a-z]+))\s+and\s+"
+    r"(?:(?:the|that)\s+(?P=c)|that\s+one)\s+(?P<p2>on|onto|in|into)\s+"
+    r"(?P<dest>(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,2}?)\s*(?P<end>,\s*(?:and\s+)?|(?=[.;!?]|$))",
+    re.I,
+)
+
+
+def _chain_said(m: re.Match[str]) -> str:
+    holder, thing = find_mentions(m["c1"]), find_mentions(m["x"])
+    if not holder or not thing or holder[-1].entry.canonical not in MOVABLE_RECEPTACLES:
+        return m[0]
+    if thing[-1].entry.canonical in MOVABLE_RECEPTACLES:
+        return m[0]
+    said = f"{m['then'] or ''}put {m['x']}{m['p']} {m['c1']} and put the {m['c']} {m['p2']} {m['dest']}"
+    return f". {said}" + (". " * bool(m["end"]))

@@ -535,8 +535,8 @@ _WISH = re.compile(  # also a cleft: "what I'd love is for you to put ..." (h220
     r"\b(?:what\s+(?:I|we)(?:'d|\s+would)\s+(?:like|love)\s+is\s+for\s+you\s+to\s+|"
     # a heading that says a list of goals: "What I need: a warm apple slice in the fridge, ..." (h231)
     + wish_heading()
-    + r"|(?:I|we)(?:'d|\s+would|\s+will)?\s+"
-    + courtesy_pattern("wish_verb")  # the wish verbs (`courtesy.txt`)
+    + r"|(?:(?:I|we)(?:'d|\s+would|\s+will)?\s+|(?:^|(?<=[.!?;]\s))(?=(?:need|want)\s+(?:the|an?|my|two)\s))"
+    + courtesy_pattern("wish_verb")  # the wish verbs (`courtesy.txt`); subject left out: "need the X on Y"
     + r"\s+(?:(?:for\s+)?you\s+to\s+)?)",
     re.I,
 )

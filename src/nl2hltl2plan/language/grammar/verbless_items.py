@@ -22,7 +22,7 @@ import re
 
 from nl2hltl2plan.errors import HTTError
 from nl2hltl2plan.language.grammar import word_tables as G
-from nl2hltl2plan.language.grammar.phrases import tokens
+from nl2hltl2plan.language.grammar.phrases import COLOURS, tokens
 from nl2hltl2plan.language.grounding import find_mentions
 
 _PLACE_PREPS = ("in", "into", "to", "onto", "on")
@@ -32,6 +32,7 @@ _LIST_WORDS = frozenset(
     {"the", "a", "an", "and", "or", "both", ",", "one", "two", "three", "four", "2", "3", "4"}
     | {"another", "more"}  # "another cloth in the tub", "two more books to the desk"
 )
+_COUNTS = frozenset({"one", "two", "three", "four", "2", "3", "4", "both", "all"})
 # a state word after the first word gives the treatment ("a cold tomato", "one washed cloth"); first, a word
 # that is also a verb opens a clause ("clean the mug in the sink")
 _STATES = frozenset(G.STATE_WORDS)
@@ -116,7 +117,9 @@ def _only_names(body: str, end: int) -> bool:
     words = [(w, s) for w, s, _ in tokens(body) if s < end]
     listed = all(
         # a source said of a name is where it is: "the book from the bed" (`landmarks.subject_sources`)
-        w in _LIST_WORDS or (k and w in _STATES | {"from"}) or any(a <= s < b for a, b in named)
+        w in _LIST_WORDS or (k and w in _STATES | COLOURS | {"from"}) or any(a <= s < b for a, b in named)
+        # "2 red cloths", "2 of the pink rags" (h293): a colour, and a part after its count, name no verb
+        or (w == "of" and k and words[k - 1][0] in _COUNTS)
         or _slice_word(words, k, named)
         for k, (w, s) in enumerate(words)
     )

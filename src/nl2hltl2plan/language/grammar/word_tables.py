@@ -579,7 +579,7 @@ GENERIC_REF = re.compile(
     r"|^(?:everything|all)(?:\s+(?:else|of\s+(?:that|this|those|these|the\s+above)|above|that|this|before|so\s+far|"
     r"(?:listed|mentioned|named|stated|given)(?:\s+(?:above|before|so\s+far))?))?"
     r"(?:\s+(?:is|are|has\s+been)\s+(?:done|finished|complete|completed|over))?$"
-    r"|^the\s+(?:rest|above)$"
+    r"|^the\s+(?:rest|above)(?:\s+(?:is|are|has\s+been)\s+(?:done|finished|complete|completed|over))?$"
     r"|^any\s+of\s+(?:that|this|those|these|the\s+above)$",  # "before any of that": before every task said
     _F,
 )
