@@ -313,7 +313,7 @@ _PARTS_IN_ORDER = re.compile(
 
 def row_labels_dropped(text: str, dropped: list[str]) -> str:
     """`text` without the labels of its rows and items (see above), each added to `dropped` as said; a
-    sentence that works "the rows in order" is "Do them in that order"."""
+    sentence that works "the rows (items) in order" is "Do them in that order", labelled or not."""
 
     def drop(m: re.Match[str]) -> str:
         if m["name"] and (m["name"].lower() in _blocking() or m["name"].lower() in _verbs()):
@@ -324,6 +324,6 @@ def row_labels_dropped(text: str, dropped: list[str]) -> str:
     said = _ROW_LABEL.sub(drop, text)
     if len(_LETTER_LABEL.findall(said)) >= 2:
         said = _LETTER_LABEL.sub(lambda m: dropped.append(m["label"]) or (m["start"] and " "), said)
-    if said == text:
+    if said == text and not _PARTS_IN_ORDER.search(text):
         return text
     return " ".join(_PARTS_IN_ORDER.sub("Do them in that order", said).split())

@@ -21,7 +21,12 @@ an action, and applies only where its parts name what it needs:
   the floor lamp", "1 cloth - rinse well, then leave in the bathtub", "potato slice, microwave, bin",
   "Two loaves of bread: store in the fridge" are "inspect the wrist watch under the floor lamp", "rinse one
   cloth well and leave it in the bathtub", "microwave the potato slice and put it in the bin", ...; "same"
-  or "ditto" after a thing is what the item before it said to do ("item 4 - mobile phone, same").
+  or "ditto" after a thing is what the item before it said to do ("item 4 - mobile phone, same");
+- "first" said after a thing whose clause goes on ("Put two bottles in the fridge. Heat a slice of bread
+  first and throw it in the bin.", `first_remarked`): the task on that thing before every other, said as a
+  remark of its own after the sentence ("... throw it in the bin. The slice of bread first."), which
+  `grammar.order_remarks` reads (the guide: "X first" orders X against each of the others); inside the
+  clause the word was left unread.
 
 >>> paired("mug: sink; apple: fridge")
 'mug -> sink, apple -> fridge'
@@ -92,7 +97,8 @@ _DETERMINER = re.compile(r"^(?P<det>(?:the|a|an|my|your|both|two)\s+)?", re.I)
 
 def household_forms(text: str) -> str:
     """`text` with each form above written out as the grammar reads it."""
-    return treated_lists(topic_said(paired(placed_items(items_said(continued(counts_before(text)))))))
+    text = first_remarked(placed_items(items_said(continued(counts_before(text)))))
+    return treated_lists(topic_said(paired(text)))
 
 
 def paired(text: str) -> str:
@@ -279,3 +285,25 @@ def placed_items(text: str) -> str:
         return f"{m['lead']}put {m['thing']} {m['rest']}"
 
     return _PLACED_ITEM.sub(said, text)
+
+
+# "Heat a slice of bread first and throw it in the bin": a thing, "first", and its clause going on with "it"
+_FIRST_INSIDE = re.compile(
+    r"(?P<lead>(?:^|(?<=[.!?;]))\s*)(?P<verb>[A-Za-z]+)\s+(?P<np>(?:the|a|an|one|two|another)\s+[a-z]+"
+    r"(?:\s+[a-z]+){0,3}?)\s+first\s*,?\s+(?P<join>and(?:\s+then)?|then)\s+(?P<rest>[a-z]+\s+(?:it|them)\b[^.!?;]*)"
+    r"(?P<end>[.!?;]|$)",
+    re.I,
+)
+
+
+def first_remarked(text: str) -> str:
+    """ "V X first and V2 it ..." as "V X and V2 it .... The X first." (see the module docstring)."""
+
+    def said(m: re.Match[str]) -> str:
+        if m["verb"].lower() not in VERBS or not _one_thing(m["np"]):
+            return m[0]
+        the = re.sub(r"^(?:a|an|one|another)\s+", "the ", m["np"], flags=re.I)
+        end = m["end"] if m["end"] and m["end"] in ".!?" else "."
+        return f"{m['lead']}{m['verb']} {m['np']} {m['join']} {m['rest']}{end} {the[0].upper()}{the[1:]} first{end}"
+
+    return _FIRST_INSIDE.sub(said, text)
