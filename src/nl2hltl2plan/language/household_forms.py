@@ -216,6 +216,8 @@ def items_said(text: str) -> str:
         named = find_mentions(thing.lower())
         if len(named) != 1 or named[0].entry.generic or not parts or not _opens_doing(parts[0]):
             return m[0]
+        if not _names_only(thing, named[0].char_start, named[0].char_end):
+            return m[0]
         before[:] = parts
         thing = _ORDINAL_THING.sub("another ", thing)
         if not (_DETERMINER.match(thing)["det"] or re.match(r"\d|another\b", thing, re.I)):  # type: ignore[index]
@@ -236,12 +238,34 @@ def items_said(text: str) -> str:
     return "".join(out) + text[pos:]
 
 
+# what may follow an item's verb: nothing, a place's preposition or a manner ("rinse well, then ..."); a
+# verb with its own object opens a clause of its own ("Ahead of the newspaper, put two keys in the safe")
+_AFTER_VERB = frozenset("in into on onto to under inside beneath well thoroughly off up out".split())
+# the words of a thing's phrase besides its name: a count, a determiner or a describing word, never an order,
+# a time or a person ("Before you examine the basketball, put ...", "Right after, heat an egg ...")
+_PIECES = frozenset({"slice", "slices"})  # "potato slice": the piece, not the verb
+_NOT_IN_ITEM = frozenset(
+    "before after ahead first then once when while begin start by finally next meanwhile until having done you "
+    "i we please whenever as soon if right".split()
+)
+
+
 def _opens_doing(part: str) -> bool:
-    """Whether the part opens with a verb that treats, places or examines a thing ("rinse well", "store
-    in the fridge", "examine under the lamp"), and not with "it" or "them" (a topic: `topic_said`)."""
+    """Whether the part opens with a verb that treats, places or examines a thing and takes no object of its
+    own ("rinse well", "store in the fridge", "examine under the lamp", "chill")."""
     words = re.sub(r"^then\s+", "", part, flags=re.I).split()
     verb = VERBS.get(words[0].lower()) if words else None
-    return verb is not None and verb[0] in _DOING and (len(words) < 2 or words[1].lower() not in {"it", "them"})
+    return verb is not None and verb[0] in _DOING and (len(words) < 2 or words[1].lower() in _AFTER_VERB)
+
+
+def _names_only(thing: str, start: int, end: int) -> bool:
+    """Whether an item's thing ("wrist watch", "1 cloth", "2nd mug") is a name with at most a count, a
+    determiner or describing words before it: no verb, preposition, order or person outside the name."""
+    said = thing.lower()
+    rest = (said[:start] + " " + said[end:]).split()
+    return len(said.split()) <= 5 and not any(
+        (w in VERBS and w not in _PIECES) or w in _NOT_IN_ITEM or w in _AFTER_VERB - {"well"} for w in rest
+    )
 
 
 def _clause(part: str, thing: str) -> str | None:
@@ -280,7 +304,8 @@ def placed_items(text: str) -> str:
     def said(m: re.Match[str]) -> str:
         thing = re.sub(r"^(?:one|two|three|four|\d|a|an|the|another)\s+", "", m["thing"], flags=re.I)
         words = thing.lower().split()
-        if not _one_thing(thing) or any(w in VERBS for w in words) or not find_mentions(m["rest"].lower()):
+        place = re.sub(r"^\w+\s+", "", m["rest"])  # one place, no list after it ("on the dresser and ...")
+        if not _one_thing(thing) or any(w in VERBS for w in words) or not _one_thing(place):
             return m[0]
         return f"{m['lead']}put {m['thing']} {m['rest']}"
 
