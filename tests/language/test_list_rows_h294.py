@@ -23,7 +23,8 @@ def kitchen(world):
 
 def test_a_count_written_after_the_things_is_read_before_them():
     text = "candles x2 - drawer; 2x spray bottles -> sink; soap bars (2) - cabinet"
-    assert counts_before(text) == "two candles - drawer; two spray bottles -> sink; two soap bars - cabinet"
+    said = "two candles - drawer; two spray bottles -> sink; two soap bars - cabinet"
+    assert counts_before(text) == said
     assert counts_before("Van at 9. Box 7 x 12") == "Van at 9. Box 7 x 12"  # no count of things
 
 
@@ -31,14 +32,18 @@ def test_row_labels_are_headings_and_an_order_word_keeps_its_label():
     dropped: list[str] = []
     said = row_labels_dropped("Row 1 - A. Row 2 - B. Work the rows in order.", dropped)
     assert (said, dropped) == ("A. B. Do them in that order.", ["Row 1", "Row 2"])
-    assert row_labels_dropped("Next item: put the mug in the sink.", []) == "Next item: put the mug in the sink."
+    kept = "Next item: put the mug in the sink."
+    assert row_labels_dropped(kept, []) == kept
 
 
 def test_labels_give_no_order_and_the_rows_in_order_give_one(kitchen):
     rows = "Row 1 - put the mug in the sink. Row 2 - put the apple in the fridge."
     assert reading(rows, kitchen) == ([MUG_SINK, APPLE_FRIDGE], [])
     assert reading(rows + " Work the rows in order.", kitchen) == ([MUG_SINK, APPLE_FRIDGE], [("A", "B")])
-    hacks = "bathroom hack number one: put the mug in the sink. Hack number two: rinse an apple and put it in the fridge."
+    hacks = (
+        "bathroom hack number one: put the mug in the sink. Hack number two: rinse an apple and put it in "
+        "the fridge."
+    )
     assert reading(hacks, kitchen) == ([MUG_SINK, "clean_place Apple -> Fridge"], [])
 
 
@@ -62,9 +67,13 @@ def test_first_said_after_the_thing_orders_its_task_first(kitchen):
 
 def test_goes_on_there_too_is_the_place_named_before_not_the_source(kitchen):
     text = "Put the mug on the counter. The apple from the fridge goes on there too."
-    assert full_reading(text, kitchen)[:3] == (["place Mug -> CounterTop", "place Apple -> CounterTop"], [], [])
+    tasks = ["place Mug -> CounterTop", "place Apple -> CounterTop"]
+    assert full_reading(text, kitchen)[:3] == (tasks, [], [])
 
 
 def test_the_same_with_one_and_then_another_is_two_examinations_in_turn():
-    said = normalize("Turn the desk lamp on and look at the mug under it. Then do the same with a pen, and then with the box.")
+    said = normalize(
+        "Turn the desk lamp on and look at the mug under it. "
+        "Then do the same with a pen, and then with the box."
+    )
     assert "Then look at a pen under the desk lamp. Then look at the box under the desk lamp" in said

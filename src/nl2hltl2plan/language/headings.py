@@ -321,9 +321,13 @@ def row_labels_dropped(text: str, dropped: list[str]) -> str:
         dropped.append(" ".join(m["label"].split()))
         return m["start"] and " "
 
+    def letter(m: re.Match[str]) -> str:
+        dropped.append(m["label"])
+        return m["start"] and " "
+
     said = _ROW_LABEL.sub(drop, text)
     if len(_LETTER_LABEL.findall(said)) >= 2:
-        said = _LETTER_LABEL.sub(lambda m: dropped.append(m["label"]) or (m["start"] and " "), said)
+        said = _LETTER_LABEL.sub(letter, said)
     if said == text and not _PARTS_IN_ORDER.search(text):
         return text
     return " ".join(_PARTS_IN_ORDER.sub("Do them in that order", said).split())

@@ -245,8 +245,8 @@ _AFTER_VERB = frozenset("in into on onto to under inside beneath well thoroughly
 # a time or a person ("Before you examine the basketball, put ...", "Right after, heat an egg ...")
 _PIECES = frozenset({"slice", "slices"})  # "potato slice": the piece, not the verb
 _NOT_IN_ITEM = frozenset(
-    "before after ahead first then once when while begin start by finally next meanwhile until having done you "
-    "i we please whenever as soon if right".split()
+    "before after ahead first then once when while begin start by finally next meanwhile until having done "
+    "you i we please whenever as soon if right".split()
 )
 
 
@@ -280,7 +280,8 @@ def _clause(part: str, thing: str) -> str | None:
         return " ".join([words[0], thing, *words[1:]])
     if re.match(r"(?:lamp|light)\s+(?:on|switched\s+on)$", part, re.I):
         return ""
-    if first in {"in", "into", "to", "onto", "on", "under", "inside"} and find_mentions(" ".join(words[1:]).lower()):
+    places = find_mentions(" ".join(words[1:]).lower())
+    if first in {"in", "into", "to", "onto", "on", "under", "inside"} and places:
         # "then to the bin": "put it to the bin" is no English the grammar reads
         return f"put {thing} {'in' if first == 'to' else first} {' '.join(words[1:])}"
     if _one_thing(part) and not _DETERMINER.match(part)["det"]:  # type: ignore[index]
@@ -329,6 +330,7 @@ def first_remarked(text: str) -> str:
             return m[0]
         the = re.sub(r"^(?:a|an|one|another)\s+", "the ", m["np"], flags=re.I)
         end = m["end"] if m["end"] and m["end"] in ".!?" else "."
-        return f"{m['lead']}{m['verb']} {m['np']} {m['join']} {m['rest']}{end} {the[0].upper()}{the[1:]} first{end}"
+        remark = f"{the[0].upper()}{the[1:]} first{end}"
+        return f"{m['lead']}{m['verb']} {m['np']} {m['join']} {m['rest']}{end} {remark}"
 
     return _FIRST_INSIDE.sub(said, text)

@@ -186,7 +186,9 @@ _NEXT_ITEM = re.compile(
     rf"(?P<np>{_ITEM}){_ITEM_END}",
     re.I,
 )
-_SAME_THEN_WITH = re.compile(r"\s*,?\s*(?:and\s+)?then\s+(?:with|for)\s+(?=(?:the|a|an|another|my|your)\s)", re.I)
+_SAME_THEN_WITH = re.compile(
+    r"\s*,?\s*(?:and\s+)?then\s+(?:with|for)\s+(?=(?:the|a|an|another|my|your)\s)", re.I
+)
 _SAME_WITH = re.compile(
     r"\b(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with)\s+"
     r"(?P<items>(?:the|a|an|another|my|your)\s[^.;!?]*?)(?=\s*(?:[.;!?]|$))",

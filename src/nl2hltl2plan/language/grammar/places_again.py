@@ -32,7 +32,8 @@ _THERE = re.compile(
     rf"(?:it|them|(?:the|a|an|two|both|\d)\s+[a-z]+(?:{_NAME_WORD})?)"
     rf"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|three|both|\d)\s+[a-z]+(?:{_NAME_WORD}){{0,2}}?"
     # a sentence that says where its thing goes, "The newspaper from the dresser goes on there too." (h294)
-    rf"|(?:^|(?<=[.!?]\s))(?:the|a|an|two|both|\d)\s+[a-z]+(?:{_NAME_WORD})?(?=(?:\s+from\s+[a-z ]+?)?\s+goes?\s))"
+    rf"|(?:^|(?<=[.!?]\s))(?:the|a|an|two|both|\d)\s+[a-z]+(?:{_NAME_WORD})?"
+    r"(?=(?:\s+from\s+[a-z ]+?)?\s+goes?\s))"
     r"(?P<source>\s+from\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)??"  # "the bottle from the toilet there"
     r"(?P<goes>\s+goes?)?"
     # "and a spoon in the bowl on there as well": the container, on the last place (users_h195dev)
