@@ -385,13 +385,12 @@ KNOWN_WRONG: set[str] = {
     "put the towel on the shelf or in the cart",
     # h285's held-out set (paper_h285; scored once at 88e8a7c7, results/language/h285.md): "it" after a plural
     # taken as the clocks, not the racket; "after that" after a gapped "and two pencils there too" orders
-    # both tasks (the truth: the clause's one); "hack number one ... number two" read as an order
+    # both tasks (the truth: the clause's one) ("hack number one ... number two", read as an order, is
+    # h294's: a label gives no order)
     "Put the tennis racket on the desk, and move two alarm clocks from the desk to the dresser. Before the "
     "racket goes on the desk, look at it under the desk lamp.",
     "Put the alarm clock on the desk and two pencils there too, and after that look at a pillow under the "
     "lamp.",
-    "What's up everyone, bathroom hack number one: put two rolls of toilet paper on the back of the toilet. "
-    "Hack number two: rinse a bar of soap and toss it in the bin. Links in the description!",
     # h284's held-out plain-user set (scored once at 88e8a7c7, results/language/h284.md): a misspelt bare
     # plural read as one; "A and B ... in that order, and C whenever" gives no order; a task dropped after
     # "as well as"
