@@ -246,7 +246,7 @@ _AFTER_VERB = frozenset("in into on onto to under inside beneath well thoroughly
 _PIECES = frozenset({"slice", "slices"})  # "potato slice": the piece, not the verb
 _NOT_IN_ITEM = frozenset(
     "before after ahead first then once when while begin start by finally next meanwhile until having done "
-    "you i we please whenever as soon if right".split()
+    "you i we please whenever as soon if right is are be and or needs need has have".split()
 )
 
 
@@ -304,9 +304,11 @@ def placed_items(text: str) -> str:
 
     def said(m: re.Match[str]) -> str:
         thing = re.sub(r"^(?:one|two|three|four|\d|a|an|the|another)\s+", "", m["thing"], flags=re.I)
-        words = thing.lower().split()
+        named = find_mentions(thing.lower())
         place = re.sub(r"^\w+\s+", "", m["rest"])  # one place, no list after it ("on the dresser and ...")
-        if not _one_thing(thing) or any(w in VERBS for w in words) or not _one_thing(place):
+        if len(named) != 1 or not _names_only(thing, named[0].char_start, named[0].char_end):
+            return m[0]  # "The plate needs to be washed and put in ...": no verbless placement
+        if not re.match(r"(?:the|a|an|my|your)\s", place, re.I) or not _one_thing(place):
             return m[0]
         return f"{m['lead']}put {m['thing']} {m['rest']}"
 
