@@ -154,8 +154,8 @@ def _one_thing(phrase: str) -> bool:
 _COUNT_NAMES = {str(n): w for n, w in enumerate("zero one two three four five six".split())}
 # "candles x2", "spray bottles ×2", "soap bars (2)" after a list's separator; "2x candles" before the things
 _COUNT_AFTER = re.compile(
-    r"(?P<lead>^|[,;:.!?]\s*|\s[-\u2013\u2014]+\s*|->\s*|\band\s+)(?P<things>[a-z][a-z ]*?[a-z])\s*"
-    r"(?:[x\u00d7]\s*(?P<n>[1-6])|\(\s*(?P<m>[1-6])\s*\))(?=\s*(?:[-\u2013\u2014,;:.!?]|->|$))",
+    r"(?P<lead>^|[,;:.!?]\s*|\s[-\u2013\u2014]+\s*|->\s*|\band\s+)(?P<things>[a-z][a-z ]*?[a-z])"
+    r"(?:\s+[x\u00d7]\s*(?P<n>[1-6])|\s*\(\s*(?P<m>[1-6])\s*\))(?=\s*(?:[-\u2013\u2014,;:.!?]|->|$))",
     re.I,
 )
 _COUNT_FIRST = re.compile(r"\b(?P<n>[1-6])\s*[x\u00d7]\s+(?=[a-z])", re.I)
@@ -166,7 +166,8 @@ def counts_before(text: str) -> str:
 
     def said(m: re.Match[str]) -> str:
         things = _DETERMINER.sub("", m["things"], count=1)
-        if not find_mentions(things.lower()):
+        named = find_mentions(things.lower())  # "put the CD in the box 2. ...": a step's number, no count
+        if len(named) != 1 or not _names_only(things, named[0].char_start, named[0].char_end):
             return m[0]
         return f"{m['lead']}{_COUNT_NAMES[m['n'] or m['m']]} {things}"
 
@@ -315,10 +316,12 @@ def placed_items(text: str) -> str:
     return _PLACED_ITEM.sub(said, text)
 
 
-# "Heat a slice of bread first and throw it in the bin": a thing, "first", and its clause going on with "it"
+# "Heat a slice of bread first and throw it in the bin": a thing, "first", and its clause going on with "it";
+# "Heat the tomato first, then put it on the counter" orders the task's own steps ("First X, then Y"), and
+# is left as it is
 _FIRST_INSIDE = re.compile(
     r"(?P<lead>(?:^|(?<=[.!?;]))\s*)(?P<verb>[A-Za-z]+)\s+(?P<np>(?:the|a|an|one|two|another)\s+[a-z]+"
-    r"(?:\s+[a-z]+){0,3}?)\s+first\s*,?\s+(?P<join>and(?:\s+then)?|then)\s+(?P<rest>[a-z]+\s+(?:it|them)\b[^.!?;]*)"
+    r"(?:\s+[a-z]+){0,3}?)\s+first\s+(?P<join>and)\s+(?P<rest>[a-z]+\s+(?:it|them)\b[^.!?;]*)"
     r"(?P<end>[.!?;]|$)",
     re.I,
 )
