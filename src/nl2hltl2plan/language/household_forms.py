@@ -307,8 +307,11 @@ def placed_items(text: str) -> str:
         thing = re.sub(r"^(?:one|two|three|four|\d|a|an|the|another)\s+", "", m["thing"], flags=re.I)
         named = find_mentions(thing.lower())
         place = re.sub(r"^\w+\s+", "", m["rest"])  # one place, no list after it ("on the dresser and ...")
-        if len(named) != 1 or not _names_only(thing, named[0].char_start, named[0].char_end):
-            return m[0]  # "The plate needs to be washed and put in ...": no verbless placement
+        # "The plate needs to be washed and put in ...", "The plate stays on the shelf": a verb after the name
+        if len(named) != 1 or thing[named[0].char_end :].strip() or not _names_only(
+            thing, named[0].char_start, named[0].char_end
+        ):
+            return m[0]
         if not re.match(r"(?:the|a|an|my|your)\s", place, re.I) or not _one_thing(place):
             return m[0]
         return f"{m['lead']}put {m['thing']} {m['rest']}"
