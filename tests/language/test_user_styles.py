@@ -378,13 +378,12 @@ KNOWN_WRONG: set[str] = {
     "put 2 soap bottles and a spray bottle on the toilet. the rest of the spray bottles go in the cabinet",
     # h285's held-out set (paper_h285; scored once at 88e8a7c7, results/language/h285.md): "it" after a plural
     # taken as the clocks, not the racket; "after that" after a gapped "and two pencils there too" orders
-    # both tasks (the truth: the clause's one); "hack number one ... number two" read as an order
+    # both tasks (the truth: the clause's one) ("hack number one ... number two", read as an order, is
+    # h294's: a label gives no order)
     "Put the tennis racket on the desk, and move two alarm clocks from the desk to the dresser. Before the "
     "racket goes on the desk, look at it under the desk lamp.",
     "Put the alarm clock on the desk and two pencils there too, and after that look at a pillow under the "
     "lamp.",
-    "What's up everyone, bathroom hack number one: put two rolls of toilet paper on the back of the toilet. "
-    "Hack number two: rinse a bar of soap and toss it in the bin. Links in the description!",
     # (h284's three wrong lines of users_h284 read right or are refused by name since h293)
     # h297's held-out red team (trust/redteam_h297held, scored once at 6b0198d1, results/language/h297.md):
     # a drink said by its glass read as the glass (or the bottle); "the remaining eggs" with none said before

@@ -64,6 +64,7 @@ __all__ = [
     "heading_pattern",
     "heading_words",
     "note_counts",
+    "row_labels_dropped",
     "unlabelled",
     "wish_heading",
 ]
@@ -285,3 +286,48 @@ def _count_kept(heading: re.Match[str]) -> str:
     if count is None or count[1].lower() not in _COUNT_WORDS:
         return ""
     return f"{count[1]} {count[2]}:"
+
+
+# --- a row's or an item's label in a household list (h294, issue 28): "Row 1 - pick up two books.",
+# "Rnd 2: 2 sets of keys onto the sofa.", "item 3 - wrist watch, ...", "bathroom hack number two: ...",
+# "(a) smartphone - ...", "b) the blue vase ...". The label names the part: its number is no count (read as
+# one, "Row 2 - a credit card" took two cards) and no order (the guide: a sequence with no temporal word
+# orders nothing; "hack number one ... number two" was read as one after the other), and a verb after it is
+# read as the sentence's own ("Hack: rinse a bar of soap" left 'rinse' unread). Numbered steps ("1.", "Step
+# 2:") are `numbered_steps`' and stay. A label with an order word ("Next item:", "Last row:") stays.
+_ROW_NUMBER = r"(?:(?:number|no\.?|#)\s*)?(?:\d+|one|two|three|four|five|six|seven|eight|nine|ten)"
+_ROW_LABEL = re.compile(
+    rf"(?P<start>^|(?<=[.!?;:,])\s*)(?P<label>(?:(?P<name>[A-Za-z]+)\s+)?{heading_pattern('row_label')}"
+    rf"(?:\s+{_ROW_NUMBER})?)\s*(?::|\s+[-–—]+\s+|[–—])\s*(?=\S)",
+    re.I,
+)
+# a letter's label, "(a) ..." / "b) ...", opening the text or a sentence: two or more of them make a list
+_LETTER_LABEL = re.compile(r"(?P<start>^|(?<=[.!?;:])\s*)(?P<label>\(?[a-h]\))\s+(?=\S)")
+# "Work the rows in order": the order of the labelled parts is the order they are written in
+_PARTS_IN_ORDER = re.compile(
+    rf"\b(?:work|do|knit|follow|complete|take)\s+(?:the|these|those)\s+{heading_pattern('row_label')}s?"
+    r"\s+(?:in\s+(?:that\s+|this\s+)?order|in\s+turn|one\s+after\s+the\s+other)\b",
+    re.I,
+)
+
+
+def row_labels_dropped(text: str, dropped: list[str]) -> str:
+    """`text` without the labels of its rows and items (see above), each added to `dropped` as said; a
+    sentence that works "the rows (items) in order" is "Do them in that order", labelled or not."""
+
+    def drop(m: re.Match[str]) -> str:
+        if m["name"] and (m["name"].lower() in _blocking() or m["name"].lower() in _verbs()):
+            return m[0]  # "Next item:", "put item ...": an order word or a verb is read
+        dropped.append(" ".join(m["label"].split()))
+        return m["start"] and " "
+
+    def letter(m: re.Match[str]) -> str:
+        dropped.append(m["label"])
+        return m["start"] and " "
+
+    said = _ROW_LABEL.sub(drop, text)
+    if len(_LETTER_LABEL.findall(said)) >= 2:
+        said = _LETTER_LABEL.sub(letter, said)
+    if said == text and not _PARTS_IN_ORDER.search(text):
+        return text
+    return " ".join(_PARTS_IN_ORDER.sub("Do them in that order", said).split())

@@ -47,7 +47,7 @@ from nl2hltl2plan.language.courtesy import (
 from nl2hltl2plan.language.frame_drops import frames_dropped
 from nl2hltl2plan.language.frame_filler import frame_note
 from nl2hltl2plan.language.grounding import find_mentions
-from nl2hltl2plan.language.headings import heading_dropped, heading_note, note_counts
+from nl2hltl2plan.language.headings import heading_dropped, heading_note, note_counts, row_labels_dropped
 from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_name_notes, descriptive_names
 from nl2hltl2plan.language.landmarks import put_away_unread
@@ -177,13 +177,15 @@ class _HouseholdReader(SharedGrammar):
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
         said = without_patter(without_apologies(answered(" ".join(lines)), _names_a_thing)).strip()
         text = without_greetings(said, _names_a_thing)
+        # a row's or an item's label ("Row 1 -", "item 3 -"): before the frame rule, which dropped some
+        self.headings = []
+        text = row_labels_dropped(text, self.headings)
         self.frames = []
         self.later_days = later_days_unread(text)
         text = frames_dropped(text, _thing_words(text), self.frames, times=True)
         self.deadlines = []
         text = deadlines_dropped(text, _thing_words(text), self.deadlines, self.frames)
         # a heading whose name is a thing's ("Prep card:", "Lamp game:"): the frame rule keeps thing words
-        self.headings = []
         text = heading_dropped(text, self.headings)
         # what the rules above leave that a learned classifier is sure is a voice's frame, naming nothing
         # check 1 asks about (h287)

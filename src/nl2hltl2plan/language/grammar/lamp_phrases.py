@@ -186,6 +186,9 @@ _NEXT_ITEM = re.compile(
     rf"(?P<np>{_ITEM}){_ITEM_END}",
     re.I,
 )
+_SAME_THEN_WITH = re.compile(
+    r"\s*,?\s*(?:and\s+)?then\s+(?:with|for)\s+(?=(?:the|a|an|another|my|your)\s)", re.I
+)
 _SAME_WITH = re.compile(
     r"\b(?:do\s+)?(?:the\s+)?same\s+(?:thing\s+)?(?:for|with)\s+"
     r"(?P<items>(?:the|a|an|another|my|your)\s[^.;!?]*?)(?=\s*(?:[.;!?]|$))",
@@ -334,7 +337,12 @@ def items_under_lamp(text: str) -> str:
 
     def same(m: re.Match[str]) -> str:  # "do the same" may follow the examination's sentence
         lamp = _lamp_before(m.string, m.start(), sentences=1)
-        return (lamp and _listed_under(m["items"], lamp, m[0][0].isupper())) or m[0]
+        if not lamp:
+            return m[0]
+        # "do the same with a watch, and then with the laptop": one after the other (h294)
+        turns = _SAME_THEN_WITH.split(m["items"])
+        said = [_listed_under(t, lamp, m[0][0].isupper() and not k) for k, t in enumerate(turns)]
+        return ". Then ".join(said) if all(said) else m[0]  # type: ignore[arg-type]
 
     text = _SAME_WITH.sub(same, text)
     at = 0  # item by item: each one written out is the examination the next one follows

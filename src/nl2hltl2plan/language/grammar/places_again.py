@@ -30,8 +30,12 @@ _NAME_WORD = r"\s+(?!(?:over|in|into|inside|on|onto)\b)[a-z]+"
 _THERE = re.compile(
     r"(?P<head>\b(?:put|place|set|stick|pop|drop|leave|store|move|throw|toss|carry|take|bring)\s+"
     rf"(?:it|them|(?:the|a|an|two|both|\d)\s+[a-z]+(?:{_NAME_WORD})?)"
-    rf"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|three|both|\d)\s+[a-z]+(?:{_NAME_WORD}){{0,2}}?)"
+    rf"|(?:(?<=\bthen\s)|(?<=\band\s))(?:the|a|an|two|three|both|\d)\s+[a-z]+(?:{_NAME_WORD}){{0,2}}?"
+    # a sentence that says where its thing goes, "The newspaper from the dresser goes on there too." (h294)
+    rf"|(?:^|(?<=[.!?]\s))(?:the|a|an|two|both|\d)\s+[a-z]+(?:{_NAME_WORD})?"
+    r"(?=(?:\s+from\s+[a-z ]+?)?\s+goes?\s))"
     r"(?P<source>\s+from\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?)??"  # "the bottle from the toilet there"
+    r"(?P<goes>\s+goes?)?"
     # "and a spoon in the bowl on there as well": the container, on the last place (users_h195dev)
     r"(?P<inner>\s+(?:in|into|inside)\s+(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+)?(?=\s+(?:on|onto)\s+there\b))?"
     # "and two rolls next to it": beside the thing placed last, so where it was put
@@ -76,7 +80,7 @@ def _there_named(m: re.Match[str]) -> str:
     prep = "in" if prep == "to" else prep  # "walk to the sink ... in there"
     if m["head"].split()[0].lower() in ("carry", "take", "bring", "move"):
         prep = "to"  # "carry the pan over there": to the table ("carry the pan on the table": where it is)
-    said = f"{m['head']}{m['source'] or ''}{m['inner'] or ''} {prep} the {place.surface}"
+    said = f"{m['head']}{m['source'] or ''}{m['inner'] or ''}{m['goes'] or ''} {prep} the {place.surface}"
     return said + (" " if m[0].endswith(" ") else "")
 
 
