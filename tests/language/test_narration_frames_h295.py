@@ -53,14 +53,15 @@ def test_a_request_to_the_robot_or_a_diary_is_no_narration() -> None:
 
 
 @pytest.mark.data
-def test_a_multiplier_no_task_takes_is_refused() -> None:
-    """The grammar reads "eggs x2 - place in the fridge" as one egg: check 1 names the count."""
+def test_a_multiplier_is_a_count_never_one_thing() -> None:
+    """"eggs x2 - place in the fridge" is two eggs (h294's `counts_before`), or, where a reading took one,
+    check 1 names the count (h295's `multipliers_unread`): never one egg at exit 0."""
     try:
-        _, _, unparsed, _ = read("eggs x2 - place in the fridge.")
+        tasks, _, unparsed, _ = read("eggs x2 - place in the fridge.")
     except Nl2Hltl2PlanError as refused:
         assert "x2" in str(refused)
         return
-    assert any("x2" in u for u in unparsed), unparsed
+    assert tasks == ["place_two 2x Egg -> Fridge"] or any("x2" in u for u in unparsed), (tasks, unparsed)
 
 
 @pytest.mark.data

@@ -245,9 +245,26 @@ def plural_as_one(
     alone = all(o.char_start == m.char_start or not set(o.entry.types) & set(m.entry.types)
                 for o in find_mentions(instruction)) and not _ONE_SAID.search(instruction, m.char_end)
     mine = [t for t in tasks if set(t.object) & set(m.entry.types)]
+    if _head_shared(instruction, m, tasks, mine):
+        return
     total = sum(instances.get(t, 0) for t in m.entry.types)
     if alone and len(mine) == 1 and mine[0].count == 1 and not mine[0].sliced and total > 1:
         raise HTTError(
             f"{m.surface!r}: {scene} has {total} of them and the task would take 1 (a plural read as one): "
             f"say how many ('two {m.surface}', 'all the {m.surface}'), or 'the {m.entry.phrase}' for one"
         )
+
+
+_HEAD = re.compile(r"[A-Z][a-z]*$")  # a type's head word: "Shaker" of "PepperShaker"
+
+
+def _head_shared(
+    instruction: str, m: Mention, tasks: Sequence[BaseTaskSpec], mine: Sequence[BaseTaskSpec]
+) -> bool:
+    """Whether the plural is the head a list shares ("the salt and pepper shakers": one of each, read by
+    `referents`): said right after "and" / "or" / "&", with another task's type of the same head."""
+    if not re.search(r"\b(?:and|or|&)\s*$", instruction[: m.char_start], re.I):
+        return False
+    heads = {h[0] for t in mine for o in t.object if (h := _HEAD.search(o))}
+    others = [o for t in tasks if t not in mine for o in t.object]
+    return any((h := _HEAD.search(o)) and h[0] in heads for o in others)
