@@ -213,3 +213,27 @@ def then_after_last(
             k += 1
         drop |= {(x, y) for x in range(j, i - 1) for y in range(i, k)}
     return [p for p in pairs if p not in drop]
+
+
+_SENTENCE = re.compile(r"[^.!?;\n]+[.!?;]*")
+
+
+def sentences_left_out(text: str, spans: list[tuple[int, int]]) -> list[str]:
+    """The sentences of `text` that no span (start, end) touches and that are more than a plain courtesy
+    formula ("Thanks!", "please."): the structure model's reading drops them, so its reader names them in
+    the assumptions ("Go Rovers!", "Miss you loads.", h299); check 1 has already found no content word in
+    them.
+
+    >>> sentences_left_out("Put the egg in the fridge. Go Rovers! Thanks.", [(0, 25)])
+    ['Go Rovers']
+    """
+    from nl2hltl2plan.language.courtesy import courtesy_words
+
+    plain = courtesy_words("courtesy_word") | courtesy_words("word") | courtesy_words("closing")
+    left = []
+    for m in _SENTENCE.finditer(text):
+        touched = any(a < m.end() and m.start() < b for a, b in spans)
+        words = re.findall(r"[a-z']+", m[0].lower())
+        if not touched and any(w not in plain for w in words):
+            left.append(m[0].strip(" .!?;"))
+    return left
