@@ -22,11 +22,14 @@ tells of an event ("Tenant away until Monday.") is dropped too, and a reference'
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
-from nl2hltl2plan.language.content_words import categories
+from nl2hltl2plan.language.content_words import Unread, categories
+from nl2hltl2plan.language.courtesy import SIGNED_THING_WHY
 from nl2hltl2plan.language.frame_filler import Dropped
 from nl2hltl2plan.language.frame_remarks import references_in_full, scene_remark
 from nl2hltl2plan.language.handover_discourse import (
+    empty,
     frame_gone,
     heads_dropped,
     tails_dropped,
@@ -55,6 +58,8 @@ def frames_dropped(
     seen = Dropped(dropped, names, only_general=True)
     # (the household's references, "Recipe card no. 7", "p. 14": said in full, h279)
     sentences = _SENTENCE_END.split((references_in_full(text) if times else text).strip())
+    # "Night, Mug": a sign-off before a thing's name stays whole, to be refused by name (`thing_signed`)
+    kept = sentences.pop() if _thing_sign_off(sentences, lambda name: name.lower() in names) else None
     # "Night, Bo": a sign-off and its writer's name, both (said after what the sentences before drop)
     signed: list[str] | None = None if dropped is None else []
     sentences = unsigned(sentences, seen._replace(dropped=signed))
@@ -92,4 +97,29 @@ def frames_dropped(
         out.append(said + end if end in ".!?" and not said.endswith(end) else said)
     if dropped is not None and signed:
         dropped.extend(signed)
-    return " ".join(s for s in out if s)
+    return " ".join(s for s in [*out, kept or ""] if s)
+
+
+# a closing sentence of a sign-off and a name after its comma ("Night, Mug", "Peace, The Box")
+_SIGNED = re.compile(r"\s*(?P<off>[^,]+?)\s*,\s*(?P<name>(?:The\s+)?[A-Z][a-z]+)\W*")
+
+
+def _thing_sign_off(sentences: list[str], names_a_thing: Callable[[str], bool]) -> bool:
+    """Whether the last of several sentences is a sign-off the frame rule drops ("Night", "Peace", "Okay")
+    before a capitalised name that names a thing (`names_a_thing`)."""
+    m = _SIGNED.fullmatch(sentences[-1]) if len(sentences) > 1 else None
+    name = m["name"].split()[-1] if m else ""  # ("The Mug": the mug)
+    return bool(m and names_a_thing(name) and empty(m["off"], edge=True, outer=True))
+
+
+def thing_signed(text: str, names_a_thing: Callable[[str], bool]) -> list[Unread]:
+    """A closing sign-off before a name that is also a thing, named unread as `courtesy_unread` names
+    "Thanks, Mug": a writer's name or one more item, no reading can tell ("Night, Mug", h299).
+
+    >>> thing_signed("Put the egg in the fridge. Night, Mug", lambda name: name.lower() == "mug")
+    [Unread(words='Night, Mug', category='object', reason="a sign-off's name that is also a thing: say the thing in a request of its own")]
+    """
+    sentences = _SENTENCE_END.split(text.strip())
+    if not _thing_sign_off(sentences, names_a_thing):
+        return []
+    return [Unread(sentences[-1].strip(" .!"), "object", SIGNED_THING_WHY)]
