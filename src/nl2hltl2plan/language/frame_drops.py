@@ -67,12 +67,12 @@ def frames_dropped(
     # writer's name, no word a reader or English knows (mid-message, a name alone may be a command's object:
     # it stays; an English word, "Sequentially.", "Pause.", "Matters.", may say something: it stays too)
     word = sentences[-1].strip(" .!") if len(sentences) > 1 else ""
-    low = word.lower()
-    known = known_word(low) or bool(categories(low)) or english_word(low)
-    if word[:1].isupper() and word.isalpha() and not known and writer_name(word.capitalize(), names):
+    if _unknown_name(word, names):
         sentences.pop()
         if signed is not None:
             signed.append(word)
+    # the same word called after a request's comma ("Put the apple in the fridge, Bo."): who is asked
+    sentences = [_uncalled(sentence, names, signed) for sentence in sentences]
     kind = _NUMBERED.match(sentences[0]) if sentences else None
     again = kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[kind.end() :], re.IGNORECASE)
     out = []
@@ -98,6 +98,29 @@ def frames_dropped(
     if dropped is not None and signed:
         dropped.extend(signed)
     return " ".join(s for s in [*out, kept or ""] if s)
+
+
+def _unknown_name(word: str, names: frozenset[str]) -> bool:
+    """Whether `word` is a capitalised name that neither the reader's lists nor English know ("Bo", "Namaste";
+    not "Sequentially", "Pause", "Mug")."""
+    low = word.lower()
+    known = known_word(low) or bool(categories(low)) or english_word(low)
+    return word[:1].isupper() and word.isalpha() and not known and writer_name(word.capitalize(), names)
+
+
+# a word called after a comma where a sentence ends ("..., Bo.", "..., Kit!")
+_CALLED_AFTER = re.compile(r"\s*,\s*(?P<name>[A-Za-z]+)\s*(?P<end>[.!]*)\s*$")
+
+
+def _uncalled(sentence: str, names: frozenset[str], dropped: list[str] | None) -> str:
+    """The sentence without a name called after its last comma, where a request comes before it (a name
+    alone is a sentence of its own, above); the name goes to `dropped`."""
+    m = _CALLED_AFTER.search(sentence)
+    if m is None or not _unknown_name(m["name"], names) or len(sentence[: m.start()].split()) < 2:
+        return sentence
+    if dropped is not None:
+        dropped.append(m["name"])
+    return sentence[: m.start()] + m["end"]
 
 
 # a closing sentence of a sign-off and a name after its comma ("Night, Mug", "Peace, The Box")
