@@ -395,9 +395,9 @@ KNOWN_WRONG: set[str] = {
     "coffee table, as well as two boxes of tissues. Lastly, two remote controls on the armchair, if you "
     "would.",
     # h297's held-out red team (trust/redteam_h297held, scored once at 6b0198d1, results/language/h297.md):
-    # a drink said by its glass read as the glass (or the bottle); "the remaining eggs" with none said before
+    # a drink said by its glass read as the glass (or the bottle) ("the remaining eggs" with none said
+    # before is a vague count since h299)
     "put a glass of wine on the dining table",
-    "put the remaining eggs in the fridge",
 }
 
 
