@@ -66,7 +66,8 @@ def test_a_closing_chit_chat_sentence_is_named(text: str, dropped: str) -> None:
     got = read(text, "FloorPlan17")
     assert got != "refused"
     tasks, unread, assumed, before = got
-    assert tasks == ["place Egg -> Fridge", "place Mug -> SinkBasin"] and not unread and before == [("A", "B")]
+    assert tasks == ["place Egg -> Fridge", "place Mug -> SinkBasin"]
+    assert not unread and before == [("A", "B")]
     assert any("dropped as frame" in a and dropped in a for a in assumed), assumed
 
 

@@ -139,8 +139,8 @@ def thing_signed(text: str, names_a_thing: Callable[[str], bool]) -> list[Unread
     """A closing sign-off before a name that is also a thing, named unread as `courtesy_unread` names
     "Thanks, Mug": a writer's name or one more item, no reading can tell ("Night, Mug", h299).
 
-    >>> thing_signed("Put the egg in the fridge. Night, Mug", lambda name: name.lower() == "mug")
-    [Unread(words='Night, Mug', category='object', reason="a sign-off's name that is also a thing: say the thing in a request of its own")]
+    >>> [u.words for u in thing_signed("Put the egg in the fridge. Night, Mug", lambda name: name == "Mug")]
+    ['Night, Mug']
     """
     sentences = _SENTENCE_END.split(text.strip())
     if not _thing_sign_off(sentences, names_a_thing):

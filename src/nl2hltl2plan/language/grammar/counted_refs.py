@@ -275,7 +275,7 @@ def _rest(text: str) -> str:
         if x is None or (noun is None and tail not in ("them", "ones", "others")):
             continue
         if noun is not None and not _said_before(text, m.start(), noun):
-            continue  # "put the remaining eggs ..." with no egg said before: a vague count, as "the rest" (h299)
+            continue  # "the remaining eggs" with no egg said before: a vague count, as "the rest" (h299)
         end = noun.char_end if noun is not None else m.end()  # "the rest of the keys": key chains
         new = f"all the other {_plural(x)}"
         if tail == "remaining" and noun is not None and not noun.plural:  # "the remaining cd": one
@@ -285,7 +285,7 @@ def _rest(text: str) -> str:
 
 
 def _said_before(text: str, at: int, noun: Mention) -> bool:
-    """Whether a thing of the noun's type is named before character `at` (what the remaining ones remain of)."""
+    """Whether a thing of the noun's type is named before character `at` (what the remaining ones are of)."""
     types = set(noun.entry.types)
     return any(set(m.entry.types) & types for m in _things(text) if m.char_end <= at)
 
