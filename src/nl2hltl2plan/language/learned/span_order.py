@@ -227,13 +227,22 @@ def sentences_left_out(text: str, spans: list[tuple[int, int]]) -> list[str]:
     >>> sentences_left_out("Put the egg in the fridge. Go Rovers! Thanks.", [(0, 25)])
     ['Go Rovers']
     """
+    from nl2hltl2plan.language.content_words import categories, free_order_remarks
     from nl2hltl2plan.language.courtesy import courtesy_words
 
     plain = courtesy_words("courtesy_word") | courtesy_words("word") | courtesy_words("closing")
     left = []
     for m in _SENTENCE.finditer(text):
         touched = any(a < m.end() and m.start() < b for a, b in spans)
-        words = re.findall(r"[a-z']+", m[0].lower())
-        if not touched and any(w not in plain for w in words):
+        words = re.findall(r"[a-z0-9']+", m[0].lower())
+        # a sentence with an order, a count, a negation or a free order ("Any order works.", "Until
+        # that's done, ...") may be what the reading's order says: not frame; a verb alone ("go") names
+        # no step
+        said = {c for w in words for c in categories(w)} - _NO_STEP
+        if not touched and not said and not free_order_remarks(m[0]) and any(w not in plain for w in words):
             left.append(m[0].strip(" .!?;"))
     return left
+
+
+# a verb's kinds that name no step alone ("Go Rovers!", "Miss you loads.": check 1 reads no task in them)
+_NO_STEP = frozenset({"verb_step", "verb_any"})
