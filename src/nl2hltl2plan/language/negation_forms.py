@@ -41,7 +41,8 @@ _PLACE_NOT_WANTED = re.compile(
     r"(?<![.;!?,])\s+(?:rather\s+than|instead\s+of|in\s+place\s+of)\s+(?:on|in|into|onto|inside|to)\s+(?=(?:the|a|an)\s)"
     r"|(?<![.;!?,])\s+in\s+place\s+of\s+(?=(?:the|a|an)\s)"
     # (and "rather than the pencil" with no preposition: the thing or place not wanted, h299)
-    r"|(?<![.;!?,])\s+rather\s+than\s+(?=(?:the|a|an|my|your)\s)",
+    # ("rather than the black one" stays as said: `vague_words` names it in the user's words)
+    r"|(?<![.;!?,])\s+rather\s+than\s+(?=(?:the|a|an|my|your)\s)(?!\w+\s+\w+\s+ones?\b)",
     re.I,
 )
 # "put the mug, rather than the pot, in the sink": the thing not wanted set off by commas, which the grammar

@@ -239,10 +239,13 @@ def sentences_left_out(text: str, spans: list[tuple[int, int]]) -> list[str]:
         # that's done, ...") may be what the reading's order says: not frame; a verb alone ("go") names
         # no step
         said = {c for w in words for c in categories(w)} - _NO_STEP
-        if not touched and not said and not free_order_remarks(m[0]) and any(w not in plain for w in words):
+        ordered = free_order_remarks(m[0]) or _ORDER_NOUNS & set(words)  # ("In that order please.")
+        if not touched and not said and not ordered and any(w not in plain for w in words):
             left.append(m[0].strip(" .!?;"))
     return left
 
 
 # a verb's kinds that name no step alone ("Go Rovers!", "Miss you loads.": check 1 reads no task in them)
 _NO_STEP = frozenset({"verb_step", "verb_any"})
+# the nouns that name an order ("in that order", "in this sequence"), which no content-word kind lists
+_ORDER_NOUNS = frozenset({"order", "sequence"})
