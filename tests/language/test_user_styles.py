@@ -398,6 +398,9 @@ KNOWN_WRONG: set[str] = {
     # a drink said by its glass read as the glass (or the bottle) ("the remaining eggs" with none said
     # before is a vague count since h299)
     "put a glass of wine on the dining table",
+    # h299's held-out trust set (trust/trust_h299held, scored once at bd6a0f6f): "Later" as a sign-off is
+    # also an order word, so the frame rule keeps it and "Bread" is read as one more item
+    "Put the apple in the fridge. Later, Bread",
 }
 
 
