@@ -386,9 +386,12 @@ KNOWN_WRONG: set[str] = {
     "lamp.",
     # (h284's three wrong lines of users_h284 read right or are refused by name since h293)
     # h297's held-out red team (trust/redteam_h297held, scored once at 6b0198d1, results/language/h297.md):
-    # a drink said by its glass read as the glass (or the bottle); "the remaining eggs" with none said before
+    # a drink said by its glass read as the glass (or the bottle) ("the remaining eggs" with none said
+    # before is a vague count since h299)
     "put a glass of wine on the dining table",
-    "put the remaining eggs in the fridge",
+    # h299's held-out trust set (trust/trust_h299held, scored once at bd6a0f6f): "Later" as a sign-off is
+    # also an order word, so the frame rule keeps it and "Bread" is read as one more item
+    "Put the apple in the fridge. Later, Bread",
 }
 
 

@@ -258,14 +258,16 @@ def thanked_for(text: str) -> list[str]:
     return [m[0] for m in _THANKED_FOR.finditer(text)]
 
 
+SIGNED_THING_WHY = "a sign-off's name that is also a thing: say the thing in a request of its own"
+
+
 def courtesy_unread(text: str, names_a_thing: Callable[[str], bool]) -> list[Unread]:
     """The courtesy no reading can tell the meaning of, named unread: a sign-off's name that is also a thing
     (`greeted` keeps it) and thanks for an action (`thanked_for`)."""
     signed = _signed_thing(text, names_a_thing)  # the sign-off `greeted` kept: no second pass of greeted
-    name_why = "a sign-off's name that is also a thing: say the thing in a request of its own"
     thanks_why = "thanks for what may be done already: say what is still to do"
     thanked = [Unread(words, "action", thanks_why) for words in thanked_for(text)]
-    return [*([Unread(signed, "object", name_why)] if signed else []), *thanked]
+    return [*([Unread(signed, "object", SIGNED_THING_WHY)] if signed else []), *thanked]
 
 
 class Greeted(NamedTuple):

@@ -22,11 +22,14 @@ tells of an event ("Tenant away until Monday.") is dropped too, and a reference'
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
-from nl2hltl2plan.language.content_words import categories
+from nl2hltl2plan.language.content_words import Unread, categories
+from nl2hltl2plan.language.courtesy import SIGNED_THING_WHY
 from nl2hltl2plan.language.frame_filler import Dropped
 from nl2hltl2plan.language.frame_remarks import references_in_full, scene_remark
 from nl2hltl2plan.language.handover_discourse import (
+    empty,
     frame_gone,
     heads_dropped,
     tails_dropped,
@@ -56,6 +59,8 @@ def frames_dropped(
     seen = Dropped(dropped, names, only_general=True)
     # (the household's references, "Recipe card no. 7", "p. 14": said in full, h279)
     sentences = _SENTENCE_END.split((references_in_full(text) if times else text).strip())
+    # "Night, Mug": a sign-off before a thing's name stays whole, to be refused by name (`thing_signed`)
+    kept = sentences.pop() if _thing_sign_off(sentences, lambda name: name.lower() in names) else None
     # "Night, Bo": a sign-off and its writer's name, both (said after what the sentences before drop)
     signed: list[str] | None = None if dropped is None else []
     sentences = unsigned(sentences, seen._replace(dropped=signed))
@@ -63,12 +68,12 @@ def frames_dropped(
     # writer's name, no word a reader or English knows (mid-message, a name alone may be a command's object:
     # it stays; an English word, "Sequentially.", "Pause.", "Matters.", may say something: it stays too)
     word = sentences[-1].strip(" .!") if len(sentences) > 1 else ""
-    low = word.lower()
-    known = known_word(low) or bool(categories(low)) or english_word(low)
-    if word[:1].isupper() and word.isalpha() and not known and writer_name(word.capitalize(), names):
+    if _unknown_name(word, names):
         sentences.pop()
         if signed is not None:
             signed.append(word)
+    # the same word called after a request's comma ("Put the apple in the fridge, Bo."): who is asked
+    sentences = [_uncalled(sentence, names, signed) for sentence in sentences]
     kind = _NUMBERED.match(sentences[0]) if sentences else None
     again = kind is not None and re.search(rf"\b{kind[1]}\s+#?\d", text[kind.end() :], re.IGNORECASE)
     out = []
@@ -93,4 +98,52 @@ def frames_dropped(
         out.append(said + end if end in ".!?" and not said.endswith(end) else said)
     if dropped is not None and signed:
         dropped.extend(signed)
-    return " ".join(s for s in out if s)
+    return " ".join(s for s in [*out, kept or ""] if s)
+
+
+def _unknown_name(word: str, names: frozenset[str]) -> bool:
+    """Whether `word` is a capitalised name that neither the reader's lists nor English know ("Bo", "Namaste";
+    not "Sequentially", "Pause", "Mug")."""
+    low = word.lower()
+    known = known_word(low) or bool(categories(low)) or english_word(low)
+    return word[:1].isupper() and word.isalpha() and not known and writer_name(word.capitalize(), names)
+
+
+# a word called after a comma where a sentence ends ("..., Bo.", "..., Kit!")
+_CALLED_AFTER = re.compile(r"\s*,\s*(?P<name>[A-Za-z]+)\s*(?P<end>[.!]*)\s*$")
+
+
+def _uncalled(sentence: str, names: frozenset[str], dropped: list[str] | None) -> str:
+    """The sentence without a name called after its last comma, where a request comes before it (a name
+    alone is a sentence of its own, above); the name goes to `dropped`."""
+    m = _CALLED_AFTER.search(sentence)
+    if m is None or not _unknown_name(m["name"], names) or len(sentence[: m.start()].split()) < 2:
+        return sentence
+    if dropped is not None:
+        dropped.append(m["name"])
+    return sentence[: m.start()] + m["end"]
+
+
+# a closing sentence of a sign-off and a name after its comma ("Night, Mug", "Peace, The Box")
+_SIGNED = re.compile(r"\s*(?P<off>[^,]+?)\s*,\s*(?P<name>(?:The\s+)?[A-Z][a-z]+)\W*")
+
+
+def _thing_sign_off(sentences: list[str], names_a_thing: Callable[[str], bool]) -> bool:
+    """Whether the last of several sentences is a sign-off the frame rule drops ("Night", "Peace", "Okay")
+    before a capitalised name that names a thing (`names_a_thing`)."""
+    m = _SIGNED.fullmatch(sentences[-1]) if len(sentences) > 1 else None
+    name = m["name"].split()[-1] if m else ""  # ("The Mug": the mug)
+    return bool(m and names_a_thing(name) and empty(m["off"], edge=True, outer=True))
+
+
+def thing_signed(text: str, names_a_thing: Callable[[str], bool]) -> list[Unread]:
+    """A closing sign-off before a name that is also a thing, named unread as `courtesy_unread` names
+    "Thanks, Mug": a writer's name or one more item, no reading can tell ("Night, Mug", h299).
+
+    >>> [u.words for u in thing_signed("Put the egg in the fridge. Night, Mug", lambda name: name == "Mug")]
+    ['Night, Mug']
+    """
+    sentences = _SENTENCE_END.split(text.strip())
+    if not _thing_sign_off(sentences, names_a_thing):
+        return []
+    return [Unread(sentences[-1].strip(" .!"), "object", SIGNED_THING_WHY)]

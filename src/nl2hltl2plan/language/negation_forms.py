@@ -29,6 +29,7 @@ def instead_said(text: str) -> str:
         lead = m[0][: len(m[0]) - len(m[0].lstrip())]
         return f"{lead}don't {verb}" if verb else m[0]
 
+    text = _SET_OFF_NOT_WANTED.sub(lambda m: f" {m['rest'].strip()} instead of {m['np']}", text)
     return _PLACE_NOT_WANTED.sub(" instead of ", _INSTEAD_OF_DOING.sub(negated, text))
 
 
@@ -38,7 +39,17 @@ def instead_said(text: str) -> str:
 # (`negations.exclusions_unread`) or an action not to do (`_INSTEAD_OF_DOING`).
 _PLACE_NOT_WANTED = re.compile(
     r"(?<![.;!?,])\s+(?:rather\s+than|instead\s+of|in\s+place\s+of)\s+(?:on|in|into|onto|inside|to)\s+(?=(?:the|a|an)\s)"
-    r"|(?<![.;!?,])\s+in\s+place\s+of\s+(?=(?:the|a|an)\s)",
+    r"|(?<![.;!?,])\s+in\s+place\s+of\s+(?=(?:the|a|an)\s)"
+    # (and "rather than the pencil" with no preposition: the thing or place not wanted, h299)
+    # ("rather than the black one" stays as said: `vague_words` names it in the user's words)
+    r"|(?<![.;!?,])\s+rather\s+than\s+(?=(?:the|a|an|my|your)\s)(?!\w+\s+\w+\s+ones?\b)",
+    re.I,
+)
+# "put the mug, rather than the pot, in the sink": the thing not wanted set off by commas, which the grammar
+# read as a second thing to put there (place Pot too, exit 0, h299); said after the place, as the contrast
+_SET_OFF_NOT_WANTED = re.compile(
+    r"\s*,\s*(?:rather\s+than|instead\s+of|in\s+place\s+of)\s+"
+    r"(?P<np>(?:the|a|an|my|your)\s+[a-z]+(?:\s+[a-z]+){0,2}?)\s*,\s*(?P<rest>[^.;!?,]+)",
     re.I,
 )
 

@@ -33,6 +33,7 @@ from nl2hltl2plan.language.content_words import refuse_take_backs
 from nl2hltl2plan.language.contradictions import refuse_contradictions
 from nl2hltl2plan.language.counts import take_every_instance
 from nl2hltl2plan.language.courtesy import without_courtesy
+from nl2hltl2plan.language.frame_filler import frame_note
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, world_lookup
 from nl2hltl2plan.language.headings import unlabelled
 from nl2hltl2plan.language.htt_build import bound_places, build_htt
@@ -400,6 +401,8 @@ def _parse(
         ambiguities=parsed.ambiguities,
         unparsed=parsed.unparsed,
         issues=parsed.issues,
+        # the sentences the reading left out, which name nothing a task needs: said, never silent (h299)
+        assumptions=[frame_note(parsed.frames)] if parsed.frames else [],
     )
 
 

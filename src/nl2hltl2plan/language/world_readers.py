@@ -44,7 +44,7 @@ from nl2hltl2plan.language.courtesy import (
     without_patter,
     without_reasons,
 )
-from nl2hltl2plan.language.frame_drops import frames_dropped
+from nl2hltl2plan.language.frame_drops import frames_dropped, thing_signed
 from nl2hltl2plan.language.frame_filler import frame_note
 from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.headings import heading_dropped, heading_note, note_counts, row_labels_dropped
@@ -213,7 +213,10 @@ class _HouseholdReader(SharedGrammar):
         unread = [Unread(h.phrase, "count", why) for h in counted if h.number not in {n, n + forbids}]
         # what no reading can tell: "Cheers, Mug", "Thanks for putting ...", "all but the mug" (h208)
         said = res.instruction
-        unclear = [*courtesy_unread(said, _names_a_thing), *exclusions_unread(said), *put_away_unread(said)]
+        # ("Night, Mug": a sign-off only the frame rule knows, h299)
+        signed = courtesy_unread(said, _names_a_thing)
+        signed += [] if any(u.category == "object" for u in signed) else thing_signed(said, _names_a_thing)
+        unclear = [*signed, *exclusions_unread(said), *put_away_unread(said)]
         read = " ".join(res.unparsed).lower()  # a start the parse already left unread is not said twice
         starts = [
             u for u in starts_unread(said, _thing_words(said))

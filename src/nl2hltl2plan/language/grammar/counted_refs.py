@@ -280,12 +280,20 @@ def _rest(text: str) -> str:
         x = noun or _antecedent(text, m.start(), one_of=True)
         if x is None or (noun is None and tail not in ("them", "ones", "others")):
             continue
+        if noun is not None and not _said_before(text, m.start(), noun):
+            continue  # "the remaining eggs" with no egg said before: a vague count, as "the rest" (h299)
         end = noun.char_end if noun is not None else m.end()  # "the rest of the keys": key chains
         new = f"all the other {_plural(x)}"
         if tail == "remaining" and noun is not None and not noun.plural:  # "the remaining cd": one
             new = f"the other {noun.surface}"
         text = text[: m.start()] + _cased(new, m[0]) + text[end:]
     return text
+
+
+def _said_before(text: str, at: int, noun: Mention) -> bool:
+    """Whether a thing of the noun's type is named before character `at` (what the remaining ones are of)."""
+    types = set(noun.entry.types)
+    return any(set(m.entry.types) & types for m in _things(text) if m.char_end <= at)
 
 
 def _other_one(text: str) -> str:

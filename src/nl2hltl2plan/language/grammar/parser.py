@@ -48,6 +48,9 @@ class OfflineParse(BaseModel):
     issues: list[str] = Field(default_factory=list)
     # words several scene types fit, ranked (the learned backend ranks them; the grammar alone reports none)
     ambiguities: list[Ambiguity] = Field(default_factory=list)
+    # sentences a reading left out that name nothing a task needs (check 1 found no content word in them):
+    # said in the result's assumptions, never dropped silently (h299)
+    frames: list[str] = Field(default_factory=list)
 
 
 def parse_instruction(

@@ -10,8 +10,8 @@ slice), so a sentence about anything else, or a negated one, is left as it is:
   puts the same thing ("wash the plate and put it on the counter"), as does "needs washing and putting";
 - "would you mind V-ing" (`courtesy.txt`, `minded`) is the request, each "and V-ing" after it its base form;
 - a causative: "have the bread cut up", "get the potato sliced" is "cut the bread", "slice the potato",
-  and "have the robot slice the bread", "get someone to wash the plate" is "slice the bread", "wash the
-  plate" (the grammar's verbs only);
+  and "have the robot slice the bread", "get someone to wash the plate", "tell / ask the robot to put the
+  mug ..." is "slice the bread", "wash the plate", "put the mug ..." (the grammar's verbs only);
 - an end state of a pronoun after a clause: "wash the plate, it should end up in the cabinet" is "..., put
   it in the cabinet" ("it should end up somewhere" names no place, and is left);
 - a treatment said as a purpose right after the thing, or after the treatment's own appliance: "slice an
@@ -122,9 +122,11 @@ _GOES_VERB = r"(?:go|goes|belongs?|ends?\s+up|be\s+(?:put|placed|left|set|stored
 _INVERTED = (
     r"(?P<aux>can|could|should|will|would)\s+(?P<it>(?:the|that|this|my|your|a|an|one)\s+[a-z]+(?:\s+[a-z]+)?)"
 )
+# (and a request passed on: "tell / ask the robot to put ...", h299; a robot singled out, "the second
+# robot", is no match: `vague_words` refuses it)
+_WHO = r"(?:(?:the|a|one|my|your|our)\s+robots?|one\s+of\s+(?:the\s+)?robots|someone|somebody)"
 _AGENT = re.compile(
-    rf"{_LEAD}(?:have|get|let)\s+(?:(?:the|a|one)\s+robots?|one\s+of\s+(?:the\s+)?robots|someone|somebody)"
-    r"\s+(?:to\s+)?(?P<verb>[a-z]+)\b",
+    rf"{_LEAD}(?:(?:have|get|let)\s+{_WHO}\s+(?:to\s+)?|(?:tell|ask)\s+{_WHO}\s+to\s+)(?P<verb>[a-z]+)\b",
     re.I,
 )
 

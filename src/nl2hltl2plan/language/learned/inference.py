@@ -31,7 +31,7 @@ from nl2hltl2plan.language.grounding import AffordanceLookup, find_mentions
 from nl2hltl2plan.language.learned.ranker import TypeRanker
 from nl2hltl2plan.language.learned.rescue import rewrite
 from nl2hltl2plan.language.learned.slot_model import SlotModel, SlotPrediction
-from nl2hltl2plan.language.learned.span_order import POINTING
+from nl2hltl2plan.language.learned.span_order import POINTING, sentences_left_out
 from nl2hltl2plan.language.learned.structure import StructureModel, load_structure
 from nl2hltl2plan.language.learned.structured import (
     StructurePolicy,
@@ -354,8 +354,9 @@ def structure_reading(
     if not complete_and_accounted(instruction, tasks, before):
         return None
     renamed = _renamed_ambiguities(ambiguities, parsed, tasks)
+    left = sentences_left_out(said, [(s.start, s.end) for s in reading.spans])
     parse = LearnedParse(
-        instruction=instruction, tasks=tasks, before=before, groups=groups, ambiguities=renamed
+        instruction=instruction, tasks=tasks, before=before, groups=groups, ambiguities=renamed, frames=left
     )
     return parse, reading.confidence, any(x.relation in POINTING for x in reading.spans)
 

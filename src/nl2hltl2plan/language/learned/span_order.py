@@ -213,3 +213,39 @@ def then_after_last(
             k += 1
         drop |= {(x, y) for x in range(j, i - 1) for y in range(i, k)}
     return [p for p in pairs if p not in drop]
+
+
+_SENTENCE = re.compile(r"[^.!?;\n]+[.!?;]*")
+
+
+def sentences_left_out(text: str, spans: list[tuple[int, int]]) -> list[str]:
+    """The sentences of `text` that no span (start, end) touches and that are more than a plain courtesy
+    formula ("Thanks!", "please."): the structure model's reading drops them, so its reader names them in
+    the assumptions ("Go Rovers!", "Miss you loads.", h299); check 1 has already found no content word in
+    them.
+
+    >>> sentences_left_out("Put the egg in the fridge. Go Rovers! Thanks.", [(0, 25)])
+    ['Go Rovers']
+    """
+    from nl2hltl2plan.language.content_words import categories, free_order_remarks
+    from nl2hltl2plan.language.courtesy import courtesy_words
+
+    plain = courtesy_words("courtesy_word") | courtesy_words("word") | courtesy_words("closing")
+    left = []
+    for m in _SENTENCE.finditer(text):
+        touched = any(a < m.end() and m.start() < b for a, b in spans)
+        words = re.findall(r"[a-z0-9']+", m[0].lower())
+        # a sentence with an order, a count, a negation or a free order ("Any order works.", "Until
+        # that's done, ...") may be what the reading's order says: not frame; a verb alone ("go") names
+        # no step
+        said = {c for w in words for c in categories(w)} - _NO_STEP
+        ordered = free_order_remarks(m[0]) or _ORDER_NOUNS & set(words)  # ("In that order please.")
+        if not touched and not said and not ordered and any(w not in plain for w in words):
+            left.append(m[0].strip(" .!?;"))
+    return left
+
+
+# a verb's kinds that name no step alone ("Go Rovers!", "Miss you loads.": check 1 reads no task in them)
+_NO_STEP = frozenset({"verb_step", "verb_any"})
+# the nouns that name an order ("in that order", "in this sequence"), which no content-word kind lists
+_ORDER_NOUNS = frozenset({"order", "sequence"})
