@@ -33,7 +33,7 @@ HELD = [(int(task), text) for style in STYLES["validation36"].values() for task,
 # left refused: "Right, class:" ("right" may be a side) and "Class, watch:" ("watch" is an object); the
 # e-mails under a subject line the body says again and the "A: ... B: ..." dialogues read since h215
 # (`handover_headers`)
-STILL_REFUSED = {STYLES["dev102"]["teacher"]["2"], STYLES["dev102"]["teacher"]["4"]}
+STILL_REFUSED = {STYLES["dev102"]["teacher"]["2"]}  # ("4" is read the same since h296: "Class, watch:")
 HEADED = [(int(t), text) for voice in ("email_subject", "dialogue") for t, text in DEV102[voice].items()]
 PILLARS = "Move the three pillars to E, F and G beside arms a and b. "
 YELLOW = "Put the yellow block on I and then on G. "
