@@ -255,16 +255,13 @@ def plural_as_one(
         )
 
 
-_HEAD = re.compile(r"[A-Z][a-z]*$")  # a type's head word: "Shaker" of "PepperShaker"
-
-
 def _head_shared(
     instruction: str, m: Mention, tasks: Sequence[BaseTaskSpec], mine: Sequence[BaseTaskSpec]
 ) -> bool:
-    """Whether the plural is the head a list shares ("the salt and pepper shakers": one of each, read by
-    `referents`): said right after "and" / "or" / "&", with another task's type of the same head."""
+    """Whether the plural is the head a list shares ("the salt and pepper shakers": one of each, as
+    `grammar.phrases.one_of_each_under_a_shared_plural` reads it): said right after "and" / "or" / "&", with
+    another task's type of the same head word."""
     if not re.search(r"\b(?:and|or|&)\s*$", instruction[: m.char_start], re.I):
         return False
-    heads = {h[0] for t in mine for o in t.object if (h := _HEAD.search(o))}
-    others = [o for t in tasks if t not in mine for o in t.object]
-    return any((h := _HEAD.search(o)) and h[0] in heads for o in others)
+    heads = {camel_words(o).split()[-1] for t in mine for o in t.object}
+    return any(camel_words(o).split()[-1] in heads for t in tasks if t not in mine for o in t.object)
