@@ -526,6 +526,7 @@ def _each_placed(m: re.Match[str]) -> str:
 # count on from (1) or (a), so "(2 of them)" or a lone "(b)" stays
 _MARKER = re.compile(r"(?P<before>[:;,]?)\s*\((?P<n>\d|[a-h])\)\s*", re.I)
 
+
 def _unnumbered(text: str) -> str:
     """`text` with the markers of a numbered list, (1), (2), ... or (a), (b), ..., read as items' ";"."""
     marks = [m["n"].lower() for m in _MARKER.finditer(text)]
