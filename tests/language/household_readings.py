@@ -3,7 +3,11 @@ order, as `translate` gives them for a floor plan's world (a partial reading fai
 
 from __future__ import annotations
 
+import pytest
+
+from nl2hltl2plan.cli.main import main
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
+from nl2hltl2plan.language.result import LanguageResult
 from nl2hltl2plan.language.translate import translate
 from nl2hltl2plan.suites.alfred.conversion import scenario_world
 from nl2hltl2plan.worlds.world import World
@@ -47,3 +51,17 @@ def outcome(text: str, world: World) -> list[str] | str:
     except Nl2Hltl2PlanError:
         return "refused"
     return "partial" if res.partial else [t.summary() for t in res.tasks]
+
+
+def result_or_none(text: str, plan: str) -> LanguageResult | None:
+    """`translate`'s result in the floor plan's shared world, or None where it refuses (the trust probes)."""
+    try:
+        return translate(text, shared_world(plan), build=False, actions="none")
+    except Nl2Hltl2PlanError:
+        return None
+
+
+def plan_refusal(text: str, plan: str, capsys: pytest.CaptureFixture[str]) -> str:
+    """What `nl2hltl2plan plan TEXT --world PLAN` prints on stderr, asserting it refuses (exit 2)."""
+    assert main(["plan", text, "--world", plan]) == 2
+    return capsys.readouterr().err

@@ -18,27 +18,16 @@ The near misses beside them must read as before. The many-case tables are trust/
 
 from __future__ import annotations
 
-import sys
-from pathlib import Path
-
 import pytest
+from household_readings import plan_refusal, result_or_none, shared_world
 
-from nl2hltl2plan.cli.main import main
-from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.translate import translate
-
-sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
 
 
 def read(text: str, scene: str) -> tuple[list[str], list[str], list[tuple[str, str]]] | str:
     """(the tasks' summaries, what is left unread, the order), or "refused"."""
-    from trust_sets import world_of
-
-    try:
-        res = translate(text, world_of(scene), build=False, actions="none")
-    except Nl2Hltl2PlanError:
-        return "refused"
-    return [t.summary() for t in res.tasks], res.unparsed, list(res.before)
+    res = result_or_none(text, scene)
+    return "refused" if res is None else ([t.summary() for t in res.tasks], res.unparsed, list(res.before))
 
 
 @pytest.mark.data
@@ -59,8 +48,7 @@ def read(text: str, scene: str) -> tuple[list[str], list[str], list[tuple[str, s
 def test_plan_refuses_what_it_dropped_naming_it(
     text: str, scene: str, named: str, capsys: pytest.CaptureFixture[str]
 ) -> None:
-    assert main(["plan", text, "--world", scene]) == 2
-    assert named in capsys.readouterr().err
+    assert named in plan_refusal(text, scene, capsys)
 
 
 @pytest.mark.data
@@ -128,9 +116,7 @@ def test_a_place_not_wanted_is_not_the_tasks(text: str) -> None:
 @pytest.mark.data
 def test_a_place_between_things_is_no_order() -> None:
     """ "onto the counter between them." names a place (paper_h178's line), not a task between two others."""
-    from trust_sets import world_of
-
     trial = "train/pick_two_obj_and_place-DishSponge-None-CounterTop-421/trial_T20190908_133115_043454"
     text = "Two sponges from the sinks onto the counter between them."
-    res = translate(text, world_of("FloorPlan421", [trial]), build=False, actions="none")
+    res = translate(text, shared_world("FloorPlan421", [trial]), build=False, actions="none")
     assert [t.summary() for t in res.tasks] == ["place_two 2x DishSponge -> CounterTop"] and not res.unparsed
