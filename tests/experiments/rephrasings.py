@@ -3310,3 +3310,64 @@ HELD_H296: dict[str, dict[int, list[str]]] = {
             "plate, either order."],
     },
 }
+
+
+# h302's held-out batch (session 35, issues 28 and 24): four rephrasings of each of the paper's four tabletop
+# tasks, one per voice (a vicar, a firefighter, a jazz bandleader, a veterinarian), voices no batch above
+# uses; written without reading the reader's code or trying any line, committed before any scoring and scored
+# once, unchanged (results/experiments/h302.md). The expected reading of each line is its task's ground truth
+# (suites/tabletop/tabletop_tasks.json), as listed above HELD_H210.
+HELD_H302: dict[str, dict[int, list[str]]] = {
+    "vicar": {
+        1: ["Bless you for lending a hand. Would you kindly place the green apple in the blue plate, and the "
+            "orange in the yellow plate? Peace be with you."],
+        2: ["Three small offerings for the harvest festival: the green apple to the pink plate, the orange "
+            "to the yellow plate and the red apple to the blue plate. The order is not a matter of doctrine; "
+            "do them as you see fit."],
+        3: ["Let us begin. The carrot is to rest in the blue plate, the orange in the yellow plate, the "
+            "green apple in the green plate and the red apple in the pink plate. You may attend to them in "
+            "whatever order seems right to you."],
+        4: ["There is a proper order to this, as to all things. Firstly, the green apple and the orange go "
+            "into the yellow plate, whichever of the two you prefer to begin with. Only when both are "
+            "settled there should the carrot and the red apple be laid in the blue plate, again in no "
+            "particular order. Amen."],
+    },
+    "firefighter": {
+        1: ["Okay, we're on scene. Get the green apple onto the blue plate and the orange onto the yellow "
+            "plate. Stay low and stay safe."],
+        2: ["Three casualties to move: the green apple goes to the pink plate, the orange to the yellow "
+            "plate, the red apple to the blue plate. Triage order doesn't matter on this shout, just get "
+            "them all there."],
+        3: ["Full turnout for this one, watch. Carrot on the blue plate, orange on the yellow plate, green "
+            "apple on the green plate, red apple on the pink plate. Work them in any order you see fit. "
+            "Helmets on."],
+        4: ["Here's the plan of attack. First the green apple and the orange go in the yellow plate, in any "
+            "order. Once both are in, and not before, the carrot and the red apple go in the blue plate, "
+            "whichever first. Go!"],
+    },
+    "jazz_bandleader": {
+        1: ["Hey cats, easy groove on this one: the green apple in the blue plate, the orange in the yellow "
+            "plate. Dig it?"],
+        2: ["Okay, a three-bar tune. Green apple into the pink plate, orange into the yellow plate, red "
+            "apple into the blue plate. Improvise the order, anything goes."],
+        3: ["Take it from the top, band. Carrot to the blue plate, orange to the yellow plate, green apple "
+            "to the green plate and red apple to the pink plate. Play them in whatever order swings for "
+            "you."],
+        4: ["This number has two choruses. In the first, the green apple and the orange go into the yellow "
+            "plate, and you can lead with either one. The second chorus only kicks in once both of those are "
+            "in: the carrot and the red apple into the blue plate, in whatever order grooves. Nice and "
+            "cool."],
+    },
+    "veterinarian": {
+        1: ["Let's get this sorted before the next appointment. Please put the green apple in the blue plate "
+            "and the orange in the yellow plate. Gently does it."],
+        2: ["Three patients on the list this morning: the green apple is for the pink plate, the orange for "
+            "the yellow plate and the red apple for the blue plate. See them in any order you like."],
+        3: ["Busy clinic today. The carrot needs to go on the blue plate, the orange on the yellow plate, "
+            "the green apple on the green plate and the red apple on the pink plate. It makes no difference "
+            "to me which you do first."],
+        4: ["First up are the green apple and the orange: into the yellow plate they go, either one first. "
+            "After that, and only after that, the carrot and the red apple go into the blue plate, in "
+            "whatever order. Who's a good boy, then?"],
+    },
+}
