@@ -93,7 +93,7 @@ def held_content(vessel_said: Mention, content: Mention) -> bool:
     types the vessel's name never has ("a glass of wine", "a bowl of apples"; not "two bottles of lotion").
 
     >>> from nl2hltl2plan.language.grounding import find_mentions
-    >>> held_content(*find_mentions("a glass of wine")), held_content(*find_mentions("a bottle of lotion"))
+    >>> held_content(*find_mentions("a glass of wine")), held_content(*find_mentions("a mug of cups"))
     (True, False)
     """
     said = vessel_said.surface.lower().split()[-1]
