@@ -387,6 +387,9 @@ KNOWN_WRONG: set[str] = {
     # (h284's three wrong lines of users_h284 read right or are refused by name since h293)
     # (h307: "put a glass of wine on the dining table" and "Put the apple in the fridge. Later, Bread", read
     # wrong at exit 0 before, are refused by name now)
+    # h307's held-out trust set (trust/trust_h307held, scored once at 13a5f56d): "water" after a glass is
+    # read as washing it (clean_place), wrong before and after h307's rules
+    "Place a glass of water on the counter top",
 }
 
 
