@@ -385,13 +385,11 @@ KNOWN_WRONG: set[str] = {
     "Put the alarm clock on the desk and two pencils there too, and after that look at a pillow under the "
     "lamp.",
     # (h284's three wrong lines of users_h284 read right or are refused by name since h293)
-    # h297's held-out red team (trust/redteam_h297held, scored once at 6b0198d1, results/language/h297.md):
-    # a drink said by its glass read as the glass (or the bottle) ("the remaining eggs" with none said
-    # before is a vague count since h299)
-    "put a glass of wine on the dining table",
-    # h299's held-out trust set (trust/trust_h299held, scored once at bd6a0f6f): "Later" as a sign-off is
-    # also an order word, so the frame rule keeps it and "Bread" is read as one more item
-    "Put the apple in the fridge. Later, Bread",
+    # (h307: "put a glass of wine on the dining table" and "Put the apple in the fridge. Later, Bread", read
+    # wrong at exit 0 before, are refused by name now)
+    # h307's held-out trust set (trust/trust_h307held, scored once at 13a5f56d): "water" after a glass is
+    # read as washing it (clean_place), wrong before and after h307's rules
+    "Place a glass of water on the counter top",
     # h300's held-out plain-user set (users_h300, scored once at 8874c89c, results/language/h300.md):
     # "once both mugs are done" and "Then ..., any order" lose orders; headed or verbless lists ("Please: X in
     # Y and Y on Z", "armchair: ... cofee table: ...") and "the other one" after "two clean cloths" split,

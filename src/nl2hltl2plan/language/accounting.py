@@ -24,7 +24,7 @@ from functools import lru_cache
 import networkx as nx
 
 from nl2hltl2plan.domain.task_kinds import slots_of
-from nl2hltl2plan.language.containers_said import unsaid_containers
+from nl2hltl2plan.language.containers_said import held_content, unsaid_containers, vessel
 from nl2hltl2plan.language.content_words import (
     COMMAND_WORDS,
     DETERMINERS,
@@ -189,15 +189,15 @@ _COMMAND_START = COMMAND_WORDS | {"", "to"}
 def _phrases(
     instruction: str, mentions: list[Mention], toks: list[tuple[str, int, int]]
 ) -> list[list[Mention]]:
-    """Mentions that name one thing together: compounds ("dresser drawer", "soap container"), "X of Y"
-    ("two bottles of lotion", "the light of the floor lamp") and parts ("the shelf in the fridge"); never
-    across punctuation ("orange: yellow plate" names two things)."""
+    """Mentions that name one thing: compounds ("dresser drawer"), "X of Y" ("two bottles of lotion";
+    not a vessel and its content, `held_content`) and parts ("the shelf in the fridge"); not across a stop."""
     out: list[list[Mention]] = []
     for m in mentions:
         if out and not re.search(r"[,:;.!?()]|\s-\s", instruction[out[-1][-1].char_end : m.char_start]):
-            gap = [w for w, _, _ in toks[out[-1][-1].end : m.start]]
-            part = out[-1][-1].surface.lower().split()[-1] in PART_NOUNS and gap[:1] in (["in"], ["inside"])
-            if not gap or ((gap[0] == "of" or part) and _modifiers(gap[1:])):
+            last = out[-1][-1]
+            gap = [w for w, _, _ in toks[last.end : m.start]]
+            part = last.surface.lower().split()[-1] in PART_NOUNS and gap[:1] in (["in"], ["inside"])
+            if not gap or (gap[0] == "of" or part) and _modifiers(gap[1:]) and not held_content(last, m):
                 out[-1].append(m)
                 continue
         out.append([m])
@@ -307,9 +307,9 @@ def _locative(
     if _walked_to(toks, m.start) or relative_subject(instruction, m, mentions):
         return True
     close_to = 0 <= i < len(toks) - 1 and toks[i][0] == "close" and toks[i + 1][0] == "to"  # as "next to"
-    sliced = toks[i][0] == "of" and "verb_sliced" in categories(toks[i - 1][0]) if i > 0 else False
+    sliced = toks[i][0] == "of" and ("verb_sliced" in categories(toks[i - 1][0]) or vessel(toks[i - 1][0]))
     if not close_to and (i < 0 or toks[i][0] not in LOCATIVE or looked_at(toks, i) or sliced):
-        return False  # "look at the box": what is examined; "a slice of apple": what is sliced (h216)
+        return False  # "look at the box": examined; "a slice of apple", "a glass of wine": cut, held (h216)
     if re.search(r"[,;:.!?]", instruction[toks[i][2] : toks[start][1]]):
         return False  # "in the drawer, also the ladle": a preposition's phrase never reaches over punctuation
     if source_at(instruction, toks, start):  # "from under the bed", "out of": where it is

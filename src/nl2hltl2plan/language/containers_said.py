@@ -23,6 +23,8 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
+from functools import cache
+from pathlib import Path
 
 from nl2hltl2plan.language.content_words import Unread
 from nl2hltl2plan.language.grounding import Mention
@@ -78,3 +80,27 @@ def unsaid_containers(instruction: str, mentions: Sequence[Mention], parse: Pars
             why = f"a thing is put in the {said[0].surface}, which the text never says holds anything"
             out.append(Unread(said[0].surface, "object", why))
     return out
+
+
+@cache
+def _vessels() -> frozenset[str]:
+    lines = Path(__file__).with_name("measure_vessels.txt").read_text(encoding="utf-8").splitlines()
+    return frozenset(w for line in lines if not line.startswith("#") for w in line.split())
+
+
+def held_content(vessel_said: Mention, content: Mention) -> bool:
+    """Whether "VESSEL of CONTENT" names two things: a vessel of measure_vessels.txt and what it holds, of
+    types the vessel's name never has ("a glass of wine", "a bowl of apples"; not "two bottles of lotion").
+
+    >>> from nl2hltl2plan.language.grounding import find_mentions
+    >>> held_content(*find_mentions("a glass of wine")), held_content(*find_mentions("a mug of cups"))
+    (True, False)
+    """
+    said = vessel_said.surface.lower().split()[-1]
+    return said in _vessels() and not set(vessel_said.entry.types) & set(content.entry.types)
+
+
+def vessel(word: str) -> bool:
+    """Whether `word` (lower case) names a vessel of measure_vessels.txt: what follows its "of" is held in
+    it ("a glass of wine"), never where something is."""
+    return word in _vessels()

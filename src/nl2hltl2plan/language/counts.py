@@ -97,6 +97,11 @@ def _both_before_a_list(w: str, instruction: str, start: int, m: Mention) -> boo
     )
 
 
+# the words after a cut into N that take its pieces together, as a count
+_PIECES_TAKEN = frozenset("them they all both those these".split())
+_PIECE_PLURALS = frozenset("slices pieces wedges chunks halves quarters".split())
+
+
 def _cut_into(words: list[str], i: int, cats: frozenset[str], parse: ParseUsage) -> Unread | None:
     """ "cut the bread into three slices (and put them ...)": how many slices a cut makes is no count a task
     takes (AI2-THOR's knife makes its own), unless the slices taken add up to it (read at exit 0, h282)."""
@@ -107,6 +112,13 @@ def _cut_into(words: list[str], i: int, cats: frozenset[str], parse: ParseUsage)
         return None
     took = [max(1, t.count) for t in parse.tasks if t.sliced]
     if n in took or n == sum(took):
+        return None
+    # "cut the apple into three slices and put a slice (two slices) in the fridge": the count names the
+    # pieces a cut makes, and the tasks take the ones they say (h307); "... put them / both / the slices"
+    # takes the cut's pieces together, a count no task keeps
+    after = words[i + 2 :]
+    the_pieces = any(a == "the" and b in _PIECE_PLURALS for a, b in zip(after, after[1:], strict=False))
+    if took and not _PIECES_TAKEN.intersection(after) and not the_pieces:
         return None
     took_said = " + ".join(map(str, took)) or "no"
     why = f"the base tasks take {took_said} slices: a cut into {n} is no count a task keeps"

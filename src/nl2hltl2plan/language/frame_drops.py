@@ -25,7 +25,6 @@ import re
 from collections.abc import Callable
 
 from nl2hltl2plan.language.content_words import Unread, categories
-from nl2hltl2plan.language.courtesy import SIGNED_THING_WHY
 from nl2hltl2plan.language.frame_filler import Dropped
 from nl2hltl2plan.language.frame_remarks import references_in_full, scene_remark
 from nl2hltl2plan.language.handover_discourse import (
@@ -47,7 +46,11 @@ _NUMBERED = re.compile(r"^\s*(?:[A-Za-z]+\s+){0,2}?([A-Za-z]+)\s+(?:no\.?\s+|num
 
 
 def frames_dropped(
-    text: str, names: frozenset[str], dropped: list[str] | None = None, times: bool = False
+    text: str,
+    names: frozenset[str],
+    dropped: list[str] | None = None,
+    times: bool = False,
+    signed_out: bool = False,
 ) -> str:
     """`text` without the sentences, labels, leading and closing phrases that name nothing a task needs
     (`handover_discourse.empty`, the world's `names` as content words): "Breathe in, friends.", "Campers,
@@ -68,7 +71,7 @@ def frames_dropped(
     # writer's name, no word a reader or English knows (mid-message, a name alone may be a command's object:
     # it stays; an English word, "Sequentially.", "Pause.", "Matters.", may say something: it stays too)
     word = sentences[-1].strip(" .!") if len(sentences) > 1 else ""
-    if _unknown_name(word, names):
+    if _unknown_name(word, names) or _led_name(sentences, names):
         sentences.pop()
         if signed is not None:
             signed.append(word)
@@ -98,7 +101,7 @@ def frames_dropped(
         out.append(said + end if end in ".!?" and not said.endswith(end) else said)
     if dropped is not None and signed:
         dropped.extend(signed)
-    return " ".join(s for s in [*out, kept or ""] if s)
+    return " ".join(s for s in [*out, "" if signed_out else kept or ""] if s)
 
 
 def _unknown_name(word: str, names: frozenset[str]) -> bool:
@@ -107,6 +110,17 @@ def _unknown_name(word: str, names: frozenset[str]) -> bool:
     low = word.lower()
     known = known_word(low) or bool(categories(low)) or english_word(low)
     return word[:1].isupper() and word.isalpha() and not known and writer_name(word.capitalize(), names)
+
+
+def _led_name(sentences: list[str], names: frozenset[str]) -> bool:
+    """Whether the last of several sentences is a writer's name (`_unknown_name`) after a short lead the
+    sign-off lists lack and that names no thing ("Later, Bo", "See you later, Priya", h307): nothing follows
+    to be ordered, so the lead orders nothing."""
+    m = _SIGNED.fullmatch(sentences[-1]) if len(sentences) > 1 else None
+    if m is None or not m["off"] or not _unknown_name(m["name"], names):
+        return False
+    words = m["off"].lower().split()
+    return len(words) <= _CLOSING_LEAD_WORDS and not any(w.strip(".!") in names for w in words)
 
 
 # a word called after a comma where a sentence ends ("..., Bo.", "..., Kit!")
@@ -124,16 +138,24 @@ def _uncalled(sentence: str, names: frozenset[str], dropped: list[str] | None) -
     return sentence[: m.start()] + m["end"]
 
 
-# a closing sentence of a sign-off and a name after its comma ("Night, Mug", "Peace, The Box")
-_SIGNED = re.compile(r"\s*(?P<off>[^,]+?)\s*,\s*(?P<name>(?:The\s+)?[A-Z][a-z]+)\W*")
+# a closing sentence of a sign-off and a name after its comma ("Night, Mug", "Peace, The Box"), or of a
+# capitalised name alone ("Bread.")
+_SIGNED = re.compile(r"\s*(?:(?P<off>[^,]+?)\s*,\s*)?(?P<name>(?:The\s+)?[A-Z][a-z]+)\W*")
+_CLOSING_LEAD_WORDS = 3  # "See you later, Kettle": a salutation or an order word before the name
 
 
 def _thing_sign_off(sentences: list[str], names_a_thing: Callable[[str], bool]) -> bool:
-    """Whether the last of several sentences is a sign-off the frame rule drops ("Night", "Peace", "Okay")
-    before a capitalised name that names a thing (`names_a_thing`)."""
+    """Whether the last of several sentences is one capitalised name that names a thing (`names_a_thing`),
+    alone or after a sign-off the frame rule drops ("Night", "Peace", "Okay") or any short lead that names
+    no thing ("Later", "See you later": an order word, h307): a writer's name or one more item, verbless
+    either way, so never read as a second task (a lowercase "the bread too" asks one)."""
     m = _SIGNED.fullmatch(sentences[-1]) if len(sentences) > 1 else None
-    name = m["name"].split()[-1] if m else ""  # ("The Mug": the mug)
-    return bool(m and names_a_thing(name) and empty(m["off"], edge=True, outer=True))
+    if m is None or not names_a_thing(m["name"].split()[-1]):  # ("The Mug": the mug)
+        return False
+    off = m["off"] or ""
+    words = off.split()
+    lead = len(words) <= _CLOSING_LEAD_WORDS and not any(names_a_thing(w.strip(".!")) for w in words)
+    return not off or empty(off, edge=True, outer=True) or lead
 
 
 def thing_signed(text: str, names_a_thing: Callable[[str], bool]) -> list[Unread]:
@@ -146,4 +168,10 @@ def thing_signed(text: str, names_a_thing: Callable[[str], bool]) -> list[Unread
     sentences = _SENTENCE_END.split(text.strip())
     if not _thing_sign_off(sentences, names_a_thing):
         return []
-    return [Unread(sentences[-1].strip(" .!"), "object", SIGNED_THING_WHY)]
+    return [Unread(sentences[-1].strip(" .!"), "object", CLOSING_THING_WHY)]
+
+
+CLOSING_THING_WHY = (
+    "a closing name that is also a thing, with nothing asked of it (a writer's name or one more item?): "
+    "say the thing in a request of its own"
+)

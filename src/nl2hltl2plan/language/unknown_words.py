@@ -86,6 +86,7 @@ from nl2hltl2plan.language.memo import reading_memo
 from nl2hltl2plan.language.parse_usage import ParseUsage
 from nl2hltl2plan.language.spelling import (
     english_frequency,
+    english_lemmas,
     english_word,
     known_word,
     listed_word,
@@ -208,15 +209,34 @@ def unknown_things(instruction: str, toks: Tokens | None = None) -> list[Unread]
         if head is not None and _unknown_thing(head):
             out.append(Unread(head, "object", THING_REASON))
     for m in _ALSO_SAID.finditer(instruction):  # "Put the mug in the sink. The zebra too."
-        word = m.group(1).lower()
-        if not (known_word(word) or categories(word) or word in _NOT_A_THING) and _unknown_thing(word):
-            out.append(Unread(word, "object", THING_REASON))
+        if _thing_said(m):
+            out.append(Unread(m.group(1).lower(), "object", THING_REASON))
     return out
 
 
-# a sentence that adds one thing to the task before it
+def thing_alone(sentence: str) -> bool:
+    """Whether `sentence` names, alone or added ("The giraffe.", "The zebra too."), a thing English knows as a
+    noun and no word table does: a thing the world lacks, which the frame rule keeps for check 1 to name
+    (h307; "The end.", "The usual." name no thing)."""
+    m = _ALSO_SAID.fullmatch(sentence.strip())
+    return m is not None and _thing_said(m)
+
+
+def _thing_said(m: re.Match[str]) -> bool:
+    word = m.group(1).lower()
+    if known_word(word) or categories(word) or word in _NOT_A_THING or not _unknown_thing(word):
+        return False
+    return m.group(0).rstrip(" .!?").lower().endswith(("too", "as well", "also")) or (
+        "NOUN" in english_lemmas(word)
+    )
+
+
+# a sentence that adds one thing to the task before it, or names one alone after a request ("Put the mug in
+# the sink. The giraffe.": a thing the lexicon lacks, named, not dropped as frame, h307)
 _ALSO_SAID = re.compile(
-    r"(?:^|[.!?;]\s+)(?:the|a|an|my|your|that|this)\s+([a-z]+)\s+(?:too|as well|also)\b", re.I
+    r"(?:^|[.!?;]\s+)(?:the|a|an|my|your|that|this)\s+([a-z]+)"
+    r"(?:\s+(?:too|as well|also)\b|\s*[.!?]+(?=\s|$)|\s*$)",
+    re.I,
 )
 
 
