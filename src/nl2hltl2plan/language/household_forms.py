@@ -105,8 +105,19 @@ _TREATED = re.compile(
 _DETERMINER = re.compile(r"^(?P<det>(?:the|a|an|my|your|both|two)\s+)?", re.I)
 
 
+# a completion clause on every task before it with no comma before the verbless item it orders ("..., and once
+# everything else is done 2 keychains on the armchair"): the comma, so that the item is a clause of its own
+_REST_DONE_ITEM = re.compile(
+    r"\b(?P<done>(?:once|when|after)\s+(?:everything\s+else|all\s+(?:of\s+)?(?:that|else|the\s+rest)|the\s+rest|"
+    r"both(?:\s+of\s+(?:them|those))?)(?:'s|\s+is|\s+are|\s+has\s+been|\s+have\s+been)\s+(?:all\s+)?"
+    r"(?:done|finished|over|complete|completed))(?=\s+(?:a|an|the|another|one|two|three|four|both|\d+)\s)",
+    re.I,
+)
+
+
 def household_forms(text: str) -> str:
     """`text` with each form above written out as the grammar reads it."""
+    text = _REST_DONE_ITEM.sub(r"\g<done>,", text)
     text = first_remarked(placed_items(items_said(continued(counts_before(narrated(text))))))
     return treated_lists(topic_said(paired(text)))
 

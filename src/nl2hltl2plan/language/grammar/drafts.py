@@ -336,6 +336,8 @@ class DraftBuilder:
                 last.markers = [m for m in last.markers if m not in st.sentence.markers] + [(kind, ref)]
             elif kind == G.FREE and len(sentence_units) > 1 and self._unordered(sentence_units):
                 pass
+            elif kind in {G.AFTER_REF, G.AFTER_ALL} and st.first_unit == 0 and G.THE_REST_DONE.match(ref):
+                sentence_units[-1].markers.append((kind, ref))  # "A, and B when the rest is done": B after A
             else:
                 # "put the apple in the fridge last": after every other task, those written after it too
                 of_all = kind == G.FINALLY and len(sentence_units) == 1

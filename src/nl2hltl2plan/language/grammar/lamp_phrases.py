@@ -330,8 +330,22 @@ def _list_under(m: re.Match[str]) -> str:
     return (m["join"] or "") + listed if listed else m[0]
 
 
+# "hold the box under the lamp, and once you've done that, hold a CD under it as well": "it" is the lamp said
+# before (the rules read "under it" as no place)
+_HELD_UNDER_IT = re.compile(r"\b(?:hold|look\s+at|examine)\s+[^,.;!?]+?\s+under\s+(?P<it>it)\b", re.I)
+
+
+def _held_under_lamp(m: re.Match[str]) -> str:
+    """The lamp said last, in this sentence or the one before, for the "it" a thing is held under."""
+    lamps = list(_LAMP.finditer(m.string, 0, m.start("it")))
+    if not lamps or len(re.findall(r"[.;!?\n]", m.string[lamps[-1].end() : m.start()])) > 1:
+        return m[0]
+    return m[0][: m.start("it") - m.start()] + lamps[-1][0].lower()
+
+
 def items_under_lamp(text: str) -> str:
     """`text` with each thing listed after an examination under a lamp written as looked at under it."""
+    text = _HELD_UNDER_IT.sub(_held_under_lamp, text)
     text = _HEADED_UNDER.sub(_headed_under, _THINGS_UNDER.sub(_things_under, text))
     text = _LIST_UNDER.sub(_list_under, text)
 

@@ -32,6 +32,7 @@ _LIST_WORDS = frozenset(
     {"the", "a", "an", "and", "or", "both", ",", "one", "two", "three", "four", "2", "3", "4"}
     | {"another", "more"}  # "another cloth in the tub", "two more books to the desk"
 )
+_OTHER_ONE = frozenset({"other", "second", "third", "2nd", "3rd"})
 _COUNTS = frozenset({"one", "two", "three", "four", "2", "3", "4", "both", "all"})
 # a state word after the first word gives the treatment ("a cold tomato", "one washed cloth"); first, a word
 # that is also a verb opens a clause ("clean the mug in the sink")
@@ -120,6 +121,8 @@ def _only_names(body: str, end: int) -> bool:
         w in _LIST_WORDS or (k and w in _STATES | COLOURS | {"from"}) or any(a <= s < b for a, b in named)
         # "2 red cloths", "2 of the pink rags" (h293): a colour, and a part after its count, name no verb
         or (w == "of" and k and words[k - 1][0] in _COUNTS)
+        # "the other card on the armchair", "a second card on the shelf": a thing of a type said before
+        or (w in _OTHER_ONE and k and words[k - 1][0] in {"the", "a", "an"})
         or _slice_word(words, k, named)
         for k, (w, s) in enumerate(words)
     )

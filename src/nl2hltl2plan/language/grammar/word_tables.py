@@ -583,4 +583,6 @@ GENERIC_REF = re.compile(
     r"|^any\s+of\s+(?:that|this|those|these|the\s+above)$",  # "before any of that": before every task said
     _F,
 )
+# a closing "when the rest is done" / "once everything else is done": every task but the clause it closes
+THE_REST_DONE = re.compile(r"^(?:the\s+rest|(?:everything|all)\s+else)\b", _F)
 ORDINALS = {"first": 0, "second": 1, "third": 2, "fourth": 3}
