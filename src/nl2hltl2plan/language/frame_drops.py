@@ -50,7 +50,7 @@ def frames_dropped(
     names: frozenset[str],
     dropped: list[str] | None = None,
     times: bool = False,
-    signed_out: bool = False,
+    signed_out: Callable[[str], bool] | None = None,
 ) -> str:
     """`text` without the sentences, labels, leading and closing phrases that name nothing a task needs
     (`handover_discourse.empty`, the world's `names` as content words): "Breathe in, friends.", "Campers,
@@ -62,8 +62,10 @@ def frames_dropped(
     seen = Dropped(dropped, names, only_general=True)
     # (the household's references, "Recipe card no. 7", "p. 14": said in full, h279)
     sentences = _SENTENCE_END.split((references_in_full(text) if times else text).strip())
-    # "Night, Mug": a sign-off before a thing's name stays whole, to be refused by name (`thing_signed`)
-    kept = sentences.pop() if _thing_sign_off(sentences, lambda name: name.lower() in names) else None
+    # "Night, Mug": a sign-off before a thing's name stays whole, to be refused by name (`thing_signed`);
+    # with `signed_out` (the reader's own test of a thing, which names it unread) it is taken out here
+    thing = signed_out or (lambda name: name.lower() in names)
+    kept = sentences.pop() if _thing_sign_off(sentences, thing) else None
     # "Night, Bo": a sign-off and its writer's name, both (said after what the sentences before drop)
     signed: list[str] | None = None if dropped is None else []
     sentences = unsigned(sentences, seen._replace(dropped=signed))
@@ -101,7 +103,7 @@ def frames_dropped(
         out.append(said + end if end in ".!?" and not said.endswith(end) else said)
     if dropped is not None and signed:
         dropped.extend(signed)
-    return " ".join(s for s in [*out, "" if signed_out else kept or ""] if s)
+    return " ".join(s for s in [*out, "" if signed_out is not None else kept or ""] if s)
 
 
 def _unknown_name(word: str, names: frozenset[str]) -> bool:

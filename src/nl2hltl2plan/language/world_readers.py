@@ -186,7 +186,7 @@ class _HouseholdReader(SharedGrammar):
         self.frames = []
         # ("Night, Mug", "Later, Bread": a closing thing's name, taken out below and named unread, h307)
         self.later_days = later_days_unread(text) + thing_signed(text, _names_a_thing)
-        text = frames_dropped(text, _thing_words(text), self.frames, times=True, signed_out=True)
+        text = frames_dropped(text, _thing_words(text), self.frames, times=True, signed_out=_names_a_thing)
         self.deadlines = []
         text = deadlines_dropped(text, _thing_words(text), self.deadlines, self.frames)
         # a heading whose name is a thing's ("Prep card:", "Lamp game:"): the frame rule keeps thing words
