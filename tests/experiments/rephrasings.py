@@ -3371,3 +3371,53 @@ HELD_H302: dict[str, dict[int, list[str]]] = {
             "whatever order. Who's a good boy, then?"],
     },
 }
+
+
+# h308's batches (session 35, issue 28): two voices per batch, the four tabletop tasks each, in voices no
+# batch above uses (dev: a thatcher, a scaffolder; held: a milliner, a tiler), with the order's freedom said
+# as "whichever order" / "either one first" (task 4 inside a stage), a lone stage label, and chat with the
+# system's words ('look', 'let's get going'); written together, HELD_H308 committed before any rule and
+# scored once, unchanged, at the end (results/experiments/h308.md). Truths: as above HELD_H210.
+DEV_H308: dict[str, dict[int, list[str]]] = {
+    "thatcher": {
+        1: ["Weather's fine, let's get going. The green apple goes on the blue plate and the orange on the "
+            "yellow plate."],
+        2: ["The green apple into the pink plate, the orange into the yellow plate, the red apple into the "
+            "blue plate, in whichever order suits."],
+        3: ["Carrot on the blue plate, orange on the yellow plate, green apple on the green plate, red apple "
+            "on the pink plate. Whichever one first, no matter."],
+        4: ["First round: the green apple and the orange onto the yellow plate, either one first. Then the "
+            "carrot and the red apple onto the blue plate, in any order."],
+    },
+    "scaffolder": {
+        1: ["Hard hats on. Green apple to the blue plate, orange to the yellow plate."],
+        2: ["Three poles to put up: green apple in the pink plate, orange in the yellow plate, red apple in "
+            "the blue plate. Either one first."],
+        3: ["Put the carrot in the blue plate, the orange in the yellow plate, the green apple in the green "
+            "plate and the red apple in the pink plate, in whichever order."],
+        4: ["Stage one: the green apple and the orange into the yellow plate, in whichever order. Once both "
+            "are in, the carrot and the red apple into the blue plate, either one first."],
+    },
+}
+HELD_H308: dict[str, dict[int, list[str]]] = {
+    "milliner": {
+        1: ["Try this on for size. The green apple goes in the blue plate and the orange in the yellow "
+            "plate."],
+        2: ["Three hats on the stand today: the green apple to the pink plate, the orange to the yellow "
+            "plate, the red apple to the blue plate, in whichever order."],
+        3: ["Put the carrot in the blue plate, the orange in the yellow plate, the green apple in the green "
+            "plate and the red apple in the pink plate. Take them in whichever order you fancy. A perfect "
+            "fit."],
+        4: ["First fitting: the green apple and the orange go in the yellow plate, in whichever order. When "
+            "both are in, the carrot and the red apple go in the blue plate, either one first."],
+    },
+    "tiler": {
+        1: ["Grout's mixed, have a look. Green apple into the blue plate, orange into the yellow plate."],
+        2: ["Green apple in the pink plate, orange in the yellow plate, red apple in the blue plate. Lay "
+            "them in any order you like."],
+        3: ["Four tiles to set: carrot on the blue plate, orange on the yellow plate, green apple on the "
+            "green plate, red apple on the pink plate, whichever first."],
+        4: ["Stage one: the green apple and the orange into the yellow plate, either one first. Stage two "
+            "waits till those are set: the carrot and the red apple into the blue plate, any order."],
+    },
+}

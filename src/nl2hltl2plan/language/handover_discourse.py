@@ -72,6 +72,7 @@ from nl2hltl2plan.language.reported_forms import (
     SOURCE,
     WANTED,
 )
+from nl2hltl2plan.language.spelling import american, english_lemmas
 
 # words that may carry a meaning here: a block, a place, an arm, a count, a negation, an order or a time
 MEANING = re.compile(
@@ -263,14 +264,42 @@ _ARTICLE_A = re.compile(r"\ba\s+(?!(?:and|or|nor|to|through|then|before|after)\b
 # thing), and "all" / "every" / "each" on a noun that names none ("all eyes on me", "all hands on deck")
 _ON_YOURS = re.compile(rf"\b(?:{VERB}|{TOUCH})\s+(?=your\s+[a-z])")
 _ALL_OF = re.compile(r"\b(?:all|every|each)\s+(?=([a-z]+))")
+# (a count or an ordinal on such a noun too, h308: "Two coats today.", "Right, first course.", "One more job
+# for you.", "First things first."; not before "at" / "by" / "in" / "after", a pace: "one eye at a time")
+_COUNT_OF = re.compile(
+    r"\b(?:first\s+(?=things\s+first\b)|(?:one|two|three|four|five|first|second|third)\s+(?:more\s+)?)"
+    r"(?=([a-z]+)\b(?!\s+(?:at|in|by|after)\b))"
+)
+_THINGS_FIRST = re.compile(r"\bthings\s+first\b")
+# (and the job said of them, where the sentence ends: "Three slates to lay.", "Two poles to put up today.")
+_COUNTED_JOB = re.compile(
+    r"\b(?:one|two|three|four|five)\s+(?:more\s+)?([a-z]+)\s+to\s+[a-z]+(?:\s+(?:up|down|in|on))?"
+    r"(?=(?:\s+(?:today|now|here))?\s*$)"
+)
 
 
 def _voice_words(text: str) -> str:
     """A voice's sentence without what names nothing there: "a" before a word (an article, no region: "we
-    have a visual", "what a gallop"), a verb on the listener's own things, a quantifier of a noun that names
-    nothing (the noun itself stays, to be judged as frame)."""
+    have a visual", "what a gallop"), a verb on the listener's own things, a quantifier or count of a noun
+    that names nothing (the noun itself stays, to be judged as frame)."""
     text = _ON_YOURS.sub(" ", _ARTICLE_A.sub(" ", text))
-    return _ALL_OF.sub(lambda m: m[0] if MEANING.fullmatch(m[1]) or _content_word(m[1], True) else " ", text)
+    text = _COUNTED_JOB.sub(lambda m: f" {m[1]} " if _uncounted(m) == " " else m[0], text)
+    text = _COUNT_OF.sub(_uncounted, _ALL_OF.sub(_unnamed, text))
+    return _THINGS_FIRST.sub(lambda m: m[0] if _content_word("things", True) else " things ", text)
+
+
+def _unnamed(said: re.Match[str]) -> str:
+    """The quantifier before a word, or nothing where the word names nothing a task could use."""
+    return said[0] if MEANING.fullmatch(said[1]) or _content_word(said[1], True) else " "
+
+
+def _uncounted(said: re.Match[str]) -> str:
+    """The count before a word, or nothing where the word is a noun (never an adverb: "one apiece" is a
+    count per place) that names nothing a task could use."""
+    kinds = english_lemmas(american(said[1]))
+    return " " if "NOUN" in kinds and "ADV" not in kinds and _unnamed(said) == " " else said[0]
+
+
 _DO_IT = re.compile(r"\b(?:do|does|did)\s+it\b(?!\s+(?:again|twice|\d))")
 _A_ONE = re.compile(r"\ban?\s+([a-z]+)\s+one\b")
 _LABEL = re.compile(r"^\s*([^:]{1,60}?)\s*:\s*(?=\S)")
@@ -531,7 +560,7 @@ def _remark(sentence: str) -> bool:
     """A voice's warning of nothing the scene has ("Mind the dog.") or its farewell ("Ta-ra.", h296)."""
     warned = (voice_remarks.caution_of(sentence) or "").lower()
     named = MEANING.search(warned) or _ACTION.search(warned)
-    return bool(warned and not named) or voice_remarks.farewell(sentence)
+    return bool(warned and not named) or voice_remarks.farewell(sentence) or voice_remarks.attention(sentence)
 
 
 def plain(sentences: list[str], dropped: list[str] | None = None) -> list[str]:

@@ -57,6 +57,17 @@ def farewell(sentence: str) -> bool:
     return re.fullmatch(rf"(?i)\W*(?:{_pattern('farewell')})[\s.!]*", _spoken(sentence)) is not None
 
 
+def attention(sentence: str) -> bool:
+    """Whether the sentence is a voice's call for the listener's eyes alone ("Look this way, please.",
+    "Eyes front!", h308): it names nothing to do.
+
+    >>> attention("Look this way, please."), attention("Look at the red block")
+    (True, False)
+    """
+    said = re.sub(r"(?i)^\W*(?:please|now|right|okay|ok)\b[\s,]*|[\s,]*\bplease\b", "", _spoken(sentence))
+    return re.fullmatch(rf"(?i)\W*(?:{_pattern('attention')})[\s.!]*", said) is not None
+
+
 def start_signal(sentence: str) -> bool:
     """Whether the sentence is a start signal alone ("Go.", "Go ahead!", "Begin.", "Proceed.", a coach's
     "Move!"): when to start, which is now; it names nothing to do ("go" alone has no block and no place)."""
@@ -86,11 +97,20 @@ def commanded(sentence: str) -> bool:
         return True  # a name alone, no sign-off's ("Ana"): it may name who acts, so it is read or refused
     for clause in re.split(r"[,;:!?.]", sentence.lower()):
         ws = re.findall(r"[a-z]+", _POLITE.sub("", clause))
+        # (a clause opened by a participle is no command: "reading glasses on", h308)
         if len(ws) < 2 or ws[0] == "like" or ws[1] in _NO_OBJECT | _COPULA or caution_of(clause):
+            continue
+        if _participle(ws[0]) or attention(clause):
             continue
         if "VERB" in english_lemmas(american(ws[0])):
             return True
     return False
+
+
+def _participle(word: str) -> bool:
+    """A verb's -ing form ("reading", "sitting", "making"; not "bring", "sing", "string")."""
+    stems = (word[:-3], word[:-3] + "e", word[:-4])
+    return len(word) >= 6 and word.endswith("ing") and any("VERB" in english_lemmas(s) for s in stems if s)
 
 
 # what a heading over a command never holds: an article or a pronoun (a thing pointed at or named:
