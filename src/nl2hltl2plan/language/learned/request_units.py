@@ -14,12 +14,12 @@ validation (`report`).
 
 The reading side (`frames_classified`) drops a unit only where the model is sure it is FRAME and no word of
 it names an object, action, count, negation or order (check 1's content: such a unit is kept, and check 1
-refuses it as before). It is measured and on by default (`ON`; results/language/h287.md).
+refuses it as before). It is measured and on by default (`config.reading_settings`, which documents
+`NL2HLTL2PLAN_REQUEST_UNITS`; results/language/h287.md).
 """
 
 from __future__ import annotations
 
-import os
 import random
 import re
 import time
@@ -30,6 +30,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from nl2hltl2plan.config.reading_settings import request_units_on
 from nl2hltl2plan.io import atomic_path
 
 if TYPE_CHECKING:
@@ -38,10 +39,6 @@ if TYPE_CHECKING:
 
 ARTIFACT = "request_model.npz"
 SENTENCES_FILE = Path(__file__).with_name("request_frames.txt")
-# `frames_classified` drops units by default (measured and adopted: over every committed set 5 more lines
-# convert and none is lost or read wrong; results/language/h287.md); NL2HLTL2PLAN_REQUEST_UNITS=0 turns it off
-ON_ENV = "NL2HLTL2PLAN_REQUEST_UNITS"
-ON = True
 THRESHOLD = 0.9  # P(FRAME) at or above which a unit is dropped
 N_MESSAGES = 4000
 
@@ -279,10 +276,10 @@ def load_request_model() -> RequestModel:
 def frames_classified(text: str, names: frozenset[str], dropped: list[str]) -> str:
     """`text` without the units the model calls FRAME at THRESHOLD that name nothing check 1 asks about
     (`content`, nor a word of the world's `names`); each dropped unit is added to `dropped` (the result's
-    assumptions). Unchanged with NL2HLTL2PLAN_REQUEST_UNITS=0 (`ON` otherwise), and when every unit would
-    go."""
+    assumptions). Unchanged with NL2HLTL2PLAN_REQUEST_UNITS=0 (`config.reading_settings`: on by default),
+    and when every unit would go."""
     ranges = units(text)
-    if os.environ.get(ON_ENV, "1" if ON else "0") != "1" or len(ranges) < 2:
+    if len(ranges) < 2 or not request_units_on():
         return text
     probs = load_request_model().frame_probability(text, ranges)
     kept: list[str] = []
