@@ -32,6 +32,8 @@ import numpy as np
 
 from nl2hltl2plan.config.reading_settings import request_units_on
 from nl2hltl2plan.io import atomic_path
+from nl2hltl2plan.language.content_words import categories, check1_categories, frame_keeps, names_content
+from nl2hltl2plan.language.grounding import find_mentions
 
 if TYPE_CHECKING:
     from nl2hltl2plan.language.learned.compose import Synth
@@ -70,9 +72,6 @@ def units(text: str) -> list[tuple[int, int]]:
 @lru_cache(maxsize=16384)
 def _kinds(unit: str) -> frozenset[str]:
     """What a unit names by the package's lexicon: thing, verb, count, negation, order, person, time."""
-    from nl2hltl2plan.language.content_words import categories, check1_categories
-    from nl2hltl2plan.language.grounding import find_mentions
-
     out = {"thing"} if find_mentions(unit.lower()) else set()
     for w in _WORD.findall(unit.lower()):
         cats = categories(w) | check1_categories(w)
@@ -84,22 +83,20 @@ def _kinds(unit: str) -> frozenset[str]:
 
 @lru_cache(maxsize=1)
 def _keeps() -> frozenset[str]:
-    """The words that keep a fragment for the general filler rule (`frame_keeps.txt`: a thing added, a
-    relation, a wait, a time, an order) and the words that point at the tasks or their order
-    (`request_frames.txt`'s `keeps`: "Do them in that order.")."""
-    from nl2hltl2plan.language.content_words import word_categories
-
-    own = {w for line in _sentence_pools()["keeps"].get("words", []) for w in line.split()}
-    return frozenset(own).union(*word_categories("frame_keeps.txt").values())
+    """The words that point at the tasks or their order (`request_frames.txt`'s `keeps`: "Do them in that
+    order.")."""
+    return frozenset(w for line in _sentence_pools()["keeps"].get("words", []) for w in line.split())
 
 
 def content(unit: str) -> bool:
     """Whether a unit names an object, an action, a count (a number too, unless a clock's), a negation or
-    an order (check 1's content), or holds a word that keeps a fragment (`_keeps`)."""
+    an order (check 1's content: the kinds `content_words.names_content` asks with `refused_only`), or
+    holds a word that keeps a fragment (`frame_keeps.txt`) or points at the tasks (`_keeps`)."""
     said = re.sub(r"\d+:\d\d", " ", unit.lower())
-    if re.search(r"\d", said) or set(_WORD.findall(said)) & _keeps():
+    if re.search(r"\d", said) or set(_WORD.findall(said)) & (frame_keeps() | _keeps()):
         return True
-    return bool(_kinds(unit) & {"thing", "verb", "count", "noun", "negation", "order"})
+    words = _WORD.findall(unit.lower())
+    return bool(find_mentions(unit.lower())) or any(names_content(w, refused_only=True) for w in words)
 
 
 def _shape(unit: str) -> list[str]:
