@@ -21,8 +21,8 @@ sys.path.insert(0, str(Path(__file__).parent))
 
 from trust_sets import STYLES, TRUST, load, read_line  # noqa: E402
 
+from nl2hltl2plan.config.reading_settings import REQUEST_UNITS_ENV as ON_ENV  # noqa: E402
 from nl2hltl2plan.errors import Nl2Hltl2PlanError  # noqa: E402
-from nl2hltl2plan.language.learned.request_units import ON_ENV  # noqa: E402
 from nl2hltl2plan.language.world_readers import _HouseholdReader  # noqa: E402
 
 HELD = ("h284", "h285", "h286")  # this session's held-out sets: never read here

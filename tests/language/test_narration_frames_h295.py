@@ -1,5 +1,5 @@
 """Narration and the frames that carry across voices (issue 28, h295): a story's past tense or a caster's
-present about the robot is read as the commands it tells of (`household_forms.narrated`); a bare closing
+present about the robot is read as the commands it tells of (`household_narration.narrated`); a bare closing
 "sorry", a channel's patter, a record's credit and an ordinal date are frame; a diary's "I took" and a
 request to the robot ("could the robot put ...") are no narration; "pillows x2" is never one pillow. The dev
 set's lines (paper_h295dev.txt) are measured by `scripts/trust_sets.py measure --sets paper_h295dev`."""
@@ -9,7 +9,7 @@ from __future__ import annotations
 import pytest
 
 from nl2hltl2plan.errors import Nl2Hltl2PlanError
-from nl2hltl2plan.language.household_forms import narrated
+from nl2hltl2plan.language.household_narration import narrated
 from tests.language.test_household_frames_h244 import EGG, MUG, read
 
 BOTH = ([EGG, MUG], [("A", "B")], [])

@@ -10,6 +10,8 @@ import time
 
 import pytest
 
+from nl2hltl2plan.config.reading_settings import REQUEST_UNITS_ENV
+from nl2hltl2plan.errors import Nl2Hltl2PlanError
 from nl2hltl2plan.language.learned import request_units as ru
 from nl2hltl2plan.language.learned.slot_model import packaged_path
 from tests.language.test_household_frames_h244 import EGG, MUG, REQUEST, read
@@ -31,10 +33,20 @@ def test_the_model_tells_a_frame_sentence_from_a_request() -> None:
 
 
 def test_set_off_the_text_is_unchanged(monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setenv(ru.ON_ENV, "0")
+    monkeypatch.setenv(REQUEST_UNITS_ENV, "0")
     assert ru.frames_classified(VOICED, frozenset(), []) == VOICED
-    monkeypatch.delenv(ru.ON_ENV)  # the default (`ON`)
+    monkeypatch.delenv(REQUEST_UNITS_ENV)  # the default (on)
     assert ru.frames_classified(VOICED, frozenset(), []) != VOICED
+
+
+def test_the_setting_reads_yes_and_no_and_refuses_anything_else(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv(REQUEST_UNITS_ENV, "false")
+    assert ru.frames_classified(VOICED, frozenset(), []) == VOICED
+    monkeypatch.setenv(REQUEST_UNITS_ENV, "true")
+    assert ru.frames_classified(VOICED, frozenset(), []) != VOICED
+    monkeypatch.setenv(REQUEST_UNITS_ENV, "sometimes")
+    with pytest.raises(Nl2Hltl2PlanError, match=f"^{REQUEST_UNITS_ENV} must be 1 or 0"):
+        ru.frames_classified(VOICED, frozenset(), [])
 
 
 @pytest.mark.parametrize(
@@ -49,15 +61,15 @@ def test_set_off_the_text_is_unchanged(monkeypatch: pytest.MonkeyPatch) -> None:
 def test_a_unit_that_names_content_is_never_dropped(
     monkeypatch: pytest.MonkeyPatch, text: str, kept: str
 ) -> None:
-    monkeypatch.setenv(ru.ON_ENV, "1")
+    monkeypatch.setenv(REQUEST_UNITS_ENV, "1")
     assert kept in ru.frames_classified(text, frozenset({"egg", "mug", "fridge", "sink"}), [])
 
 
 @pytest.mark.data
 def test_on_a_voiced_line_reads_and_says_what_it_dropped(monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setenv(ru.ON_ENV, "0")
+    monkeypatch.setenv(REQUEST_UNITS_ENV, "0")
     assert read(VOICED)[2]  # off: the greeting and the writer's "Ollie here." are left unread
-    monkeypatch.setenv(ru.ON_ENV, "1")
+    monkeypatch.setenv(REQUEST_UNITS_ENV, "1")
     tasks, before, unparsed, assumptions = read(VOICED)
     assert (tasks, before, unparsed) == ([EGG, MUG], [("A", "B")], [])
     assert any("'Hi Priya'" in a and "'Ollie here'" in a for a in assumptions), assumptions

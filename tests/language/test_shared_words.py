@@ -120,3 +120,22 @@ def test_for_whom_a_polite_maybe_and_a_greeting_are_read():
     polite = "could you maybe put the spatula in a drawer please"
     assert _tasks(polite, "FloorPlan15") == ["place Spatula -> Drawer"]
     assert _tasks("Good morning! Put the apple in the fridge.", "FloorPlan1") == ["place Apple -> Fridge"]
+
+
+def test_one_predicate_says_what_names_content_for_every_frame_rule():
+    """`content_words.names_content` (h305): the handover frame rule's notion (cautious inflections, the
+    voice's nouns skipped, the world's names), the frame filler's (numbers and `frame_keeps.txt` too) and
+    the request-unit classifier's (check 1's refused kinds by check 1's inflections), each by name."""
+    from nl2hltl2plan.language.content_words import names_content
+    from nl2hltl2plan.language.frame_filler import filler
+    from nl2hltl2plan.language.handover_discourse import empty
+    from nl2hltl2plan.language.learned.request_units import content
+
+    assert names_content("called") and not names_content("noted")  # "noted" is no "not"
+    assert names_content("guests") and not names_content("guests", voice=True)
+    assert names_content("orange", names=frozenset({"orange"})) and not names_content("orange")
+    assert names_content("too", kept=True) and names_content("3", kept=True) and not names_content("too")
+    assert names_content("putting", refused_only=True) and not names_content("putting")
+    # and the readers that ask it
+    assert empty("Noted.") and not empty("Put it down.") and not filler(("the", "zebra", "too"), 2)
+    assert content("Keep putting them away") and not content("Lovely weather today.")

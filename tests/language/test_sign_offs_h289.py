@@ -42,12 +42,12 @@ def test_a_listed_sign_off_with_its_name_is_dropped():
 
 @pytest.mark.data
 def test_a_name_alone_mid_message_is_never_dropped_unsaid_and_one_closing_the_message_is_frame(monkeypatch):
-    from nl2hltl2plan.language.learned import request_units
+    from nl2hltl2plan.config.reading_settings import REQUEST_UNITS_ENV
 
     mid = "Put the egg in the fridge. Bo. Put the mug in the sink."
-    monkeypatch.setenv(request_units.ON_ENV, "0")  # the rules alone: refused (it may be an object)
+    monkeypatch.setenv(REQUEST_UNITS_ENV, "0")  # the rules alone: refused (it may be an object)
     assert any("'Bo' (words)" in u for u in read(mid)[1])
-    monkeypatch.delenv(request_units.ON_ENV)  # the request-unit classifier (h287) drops it as frame, said
+    monkeypatch.delenv(REQUEST_UNITS_ENV)  # the request-unit classifier (h287) drops it as frame, said
     tasks, unread, assumed = read(mid)
     assert unread == [] and "'Bo'" in " ".join(assumed)
     tasks, unread, assumed = read(f"{REQUEST} Bo")

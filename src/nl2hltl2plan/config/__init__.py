@@ -1,6 +1,6 @@
 """Settings read from the environment, in one place: this package (`config.llm_settings` holds the LLM's
-and the learned translator's, as pydantic-settings models; nothing else in the package reads the
-environment).
+and the learned translator's, `config.reading_settings` the offline readers', as pydantic-settings models;
+nothing else in the package reads the environment).
 
 `NL2HLTL2PLAN_DATA` points at the shared data folder (ALFRED layouts, trials, benchmark ground
 truth...). Default: `../shared/data` relative to the repository root, falling back to the current

@@ -232,6 +232,59 @@ _CHECK1_ONLY = ("person_relation", "time", "hedge")
 DRINK_FOOD = "noun_drink_food"
 
 
+# the lexicon's words for a thing or an action no world has, and for people: in a voice's opening or closing
+# they name nothing a task could take ("Lace up your shoes", "Correct answer", "Doors closing")
+VOICE_NOUNS = frozenset({"noun_unsupported", "verb_unsupported", "verb_unsupported_before_object", "person"})
+# the kinds of word check 1 refuses unused that a voice's frame may hold: an action, a count, a noun no world
+# has, a negation, an order, a wait or a condition (the request-unit classifier's content)
+_REFUSED_PREFIXES = ("verb_", "count_", "noun_")
+_REFUSED_KINDS = frozenset({"negation", "order", "any_order", "delay", "condition"})
+
+
+@lru_cache(maxsize=1)
+def frame_keeps() -> frozenset[str]:
+    """The words that keep a frame fragment (`frame_keeps.txt`: a thing added, a relation, a wait, a time,
+    an order): never filler, never a frame word."""
+    return frozenset().union(*word_categories("frame_keeps.txt").values())
+
+
+@lru_cache(maxsize=16384)  # asked for every word of every fragment a frame rule weighs
+def names_content(
+    word: str,
+    voice: bool = False,
+    names: frozenset[str] = frozenset(),
+    kept: bool = False,
+    refused_only: bool = False,
+) -> bool:
+    """Whether one lower-case word names content that a frame rule must keep for check 1 to judge: a word
+    of the readers' vocabulary (`vocabulary`), as said or inflected ("called": call; a stem keeps four
+    letters, so "noted" is not "not"). The readers' variations, each by name:
+
+    - `voice`: in a voice's opening or closing sentence, the words of `VOICE_NOUNS` name nothing
+      (`handover_discourse.empty`'s voices);
+    - `names`: the world's own names are content too ("orange", "plate" in the tabletop world);
+    - `kept`: so are a number and a word of `frame_keeps.txt` (the frame filler's: never filler);
+    - `refused_only`: only the kinds check 1 refuses unused (an action, a count, a noun no world has, a
+      negation, an order, a wait, a condition), by check 1's own inflections (`categories`: "putting",
+      "rinsed"), as the request-unit classifier asks (`learned.request_units.content`).
+
+    >>> names_content("called"), names_content("noted"), names_content("person"), names_content("zebra")
+    (True, False, False, False)
+    >>> names_content("guests"), names_content("guests", voice=True), names_content("too", kept=True)
+    (True, False, True)
+    >>> names_content("putting"), names_content("putting", refused_only=True)
+    (False, True)
+    """
+    if word in names or kept and (word.isdigit() or word in frame_keeps()):
+        return True
+    if refused_only:
+        return any(c.startswith(_REFUSED_PREFIXES) or c in _REFUSED_KINDS for c in categories(word))
+    # an inflection's stem of at least four letters ("called": call; "noted" is not "not")
+    forms = {word} | {word[: -len(e)] for e in ("s", "ed") if word.endswith(e) and len(word) - len(e) >= 4}
+    skipped = VOICE_NOUNS if voice else frozenset()
+    return any(f in ws for name, ws in vocabulary().items() if name not in skipped for f in forms)
+
+
 @lru_cache(maxsize=8192)
 def check1_categories(word: str) -> frozenset[str]:
     """The categories of one token that check 1 alone asks (a person by relation, a time to come, a hedge):

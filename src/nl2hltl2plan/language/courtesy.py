@@ -31,7 +31,6 @@ from nl2hltl2plan.language.content_words import (
     phrase_list_pattern,
     phrase_words,
 )
-from nl2hltl2plan.language.numbered_steps import orders_by_label
 
 
 def courtesy_pattern(*kinds: str) -> str:
@@ -434,13 +433,14 @@ def without_patter(text: str) -> str:
     return _CREDIT.sub(lambda m: m["lead"], text)
 
 
-def without_framing(text: str) -> str:
+def without_framing(text: str, labels_ordered: bool = False) -> str:
     """`text` without the framing a household request comes in that carries no task, no order and no
     negation: a relayed request's "Mom says", a "P.S.", a wish frame (a wished state is a goal), a sentence
     that only announces a request and "no rush" (`courtesy.txt`: `relayed`, `postscript`, `wish`,
     `state_wish`, `aside`, `unhurried`), a hedge after "could you" (`softened`), a form of address, the
-    note's writer, a tag, spoken openers before an order word, a numbered list's markers and a heading that
-    places every item (`endearment`, `speaker`, `tag`, `opened`, `place_heading`). Words no list holds
+    note's writer, a tag, spoken openers before an order word, a numbered list's markers (unless
+    `labels_ordered`: a sentence orders the items by them, `numbered_steps.orders_by_label`) and a heading
+    that places every item (`endearment`, `speaker`, `tag`, `opened`, `place_heading`). Words no list holds
     stay, to be read or refused by name (docs/language.md, "Courtesy").
 
     >>> without_framing("Could you do me a favour? Mom says put the mug in the sink. P.S. the egg goes away")
@@ -456,7 +456,8 @@ def without_framing(text: str) -> str:
     # an address again after the others ("P.S. Sweetie, ...", "Love, ok so first ...")
     for framing in (_ADDRESSED, _APOLOGY, _RELAYED, _POSTSCRIPT, _ASIDE_SENTENCE, _UNHURRIED, _ADDRESSED):
         text = framing.sub(lambda m: m["lead"] or "", text)
-    text = _PLACE_GETS_HEADING.sub(_each_placed, _PLACE_HEADING.sub(_each_placed, _unnumbered(text)))
+    text = text if labels_ordered else _unnumbered(text)  # ("(1) A (2) B. Do (3) first.": `numbered_steps`')
+    text = _PLACE_GETS_HEADING.sub(_each_placed, _PLACE_HEADING.sub(_each_placed, text))
     return _WISH.sub("", _STATE_WISH.sub(_wished, _SOFTENED.sub(r"\1", text))).strip()
 
 
@@ -531,7 +532,5 @@ def _unnumbered(text: str) -> str:
     """`text` with the markers of a numbered list, (1), (2), ... or (a), (b), ..., read as items' ";"."""
     marks = [m["n"].lower() for m in _MARKER.finditer(text)]
     if len(marks) < 2 or marks not in (list("123456789"[: len(marks)]), list("abcdefgh"[: len(marks)])):
-        return text
-    if orders_by_label(text):  # "(1) A (2) B. Do (3) first.": `numbered_steps` reads or refuses it (h292)
         return text
     return _MARKER.sub(lambda m: ": " if m["before"] == ":" else "; ", text).lstrip("; ")

@@ -14,16 +14,17 @@ from functools import lru_cache
 from itertools import pairwise
 from typing import NamedTuple
 
-from nl2hltl2plan.language.content_words import LOCATIVE, OBJECT_START, word_categories
+from nl2hltl2plan.language.content_words import (
+    LOCATIVE,
+    OBJECT_START,
+    frame_keeps,
+    names_content,
+    word_categories,
+)
 from nl2hltl2plan.language.spelling import american, english_lemmas, english_word
 
 # what opens a thing's name or a place: after one of these, a word may name what is moved or where to
 _THING_BEFORE = OBJECT_START | LOCATIVE - {"of"} | frozenset("to into onto toward towards".split())
-
-
-@lru_cache(maxsize=1)
-def _keeps() -> frozenset[str]:
-    return frozenset().union(*word_categories("frame_keeps.txt").values())
 
 
 # a demonstrative points at a thing in view: the noun after it may name one of the scene's ("that button")
@@ -51,7 +52,7 @@ def filler(
     (True, False)
     """
     word = american(words[k])  # a British spelling is English: "marvellous", "colour"
-    if word in _keeps() or word.isdigit() or not english_word(word):
+    if names_content(word, voice, kept=True) or not english_word(word):
         return False
     if _remark_subject(words, k):
         return True
@@ -131,7 +132,7 @@ def _after_my(before: tuple[str, ...]) -> bool:
         if before[k] in ("my", "dear", "dearest"):
             return True
         kinds = english_lemmas(american(before[k]))
-        if "ADJ" not in kinds or before[k] in _keeps():
+        if "ADJ" not in kinds or before[k] in frame_keeps():
             return False
     return False
 

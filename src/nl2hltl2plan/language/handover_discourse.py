@@ -49,7 +49,7 @@ from functools import lru_cache
 from typing import NamedTuple
 
 from nl2hltl2plan.language import voice_remarks
-from nl2hltl2plan.language.content_words import vocabulary, word_categories
+from nl2hltl2plan.language.content_words import names_content, word_categories
 from nl2hltl2plan.language.courtesy import courtesy_pattern, courtesy_words
 from nl2hltl2plan.language.frame_filler import (
     PART_BREAK,
@@ -152,20 +152,6 @@ _CALL = re.compile(
 )
 
 
-# the readers' words for a thing or an action no world has, and for people: in a voice's opening or closing
-# they name nothing a task could take ("Lace up your shoes", "Correct answer", "Doors closing")
-_NO_WORLDS = frozenset({"noun_unsupported", "verb_unsupported", "verb_unsupported_before_object", "person"})
-
-
-@lru_cache(maxsize=16384)  # pure; a sentence is read again for each restated reading
-def _content_word(word: str, voice: bool = False) -> bool:
-    # an inflection's stem of at least four letters ("called": call; "noted" is not "not")
-    stems = {word[: -len(end)] for end in ("s", "ed") if word.endswith(end) and len(word) - len(end) >= 4}
-    forms = {word} | stems
-    skipped = _NO_WORLDS if voice else frozenset()
-    return any(f in ws for name, ws in vocabulary().items() if name not in skipped for f in forms)
-
-
 @lru_cache(maxsize=16384)  # pure; a sentence is read again for each restated reading
 def empty(
     fragment: str,
@@ -209,7 +195,7 @@ def empty(
     # "it" as the whole job ("can you do it", "easy does it") and "one" as a thing said of the job ("here's
     # a tricky one") name nothing a task needs
     if general:
-        text = _A_ONE.sub(lambda m: m[0] if _content_word(m[1]) else " ", _DO_IT.sub(" ", text))
+        text = _A_ONE.sub(lambda m: m[0] if names_content(m[1]) else " ", _DO_IT.sub(" ", text))
     if voice:
         text = _voice_words(text)
     if MEANING.search(text) or _ACTION.search(text):
@@ -225,7 +211,7 @@ def empty(
 
     def frame_word(ws: tuple[str, ...], k: int) -> bool:
         w = ws[k]
-        if _content_word(w, voice) or w in names:
+        if names_content(w, voice, names):
             return False
         return w in frame.single or bool(_HESITATION.fullmatch(w)) or (general and said(ws, k))
 
@@ -254,7 +240,7 @@ def _record_kind(words: str) -> bool:
     if said[-1] in frame_words()["function"]:  # "1 of 3": a count, no record's kind
         return False
     return not MEANING.search(words) and all(
-        not _content_word(w) and (w in _frame().single or filler(said, k, address=True))
+        not names_content(w) and (w in _frame().single or filler(said, k, address=True))
         for k, w in enumerate(said)
     )
 
@@ -285,12 +271,12 @@ def _voice_words(text: str) -> str:
     text = _ON_YOURS.sub(" ", _ARTICLE_A.sub(" ", text))
     text = _COUNTED_JOB.sub(lambda m: f" {m[1]} " if _uncounted(m) == " " else m[0], text)
     text = _COUNT_OF.sub(_uncounted, _ALL_OF.sub(_unnamed, text))
-    return _THINGS_FIRST.sub(lambda m: m[0] if _content_word("things", True) else " things ", text)
+    return _THINGS_FIRST.sub(lambda m: m[0] if names_content("things", True) else " things ", text)
 
 
 def _unnamed(said: re.Match[str]) -> str:
     """The quantifier before a word, or nothing where the word names nothing a task could use."""
-    return said[0] if MEANING.fullmatch(said[1]) or _content_word(said[1], True) else " "
+    return said[0] if MEANING.fullmatch(said[1]) or names_content(said[1], True) else " "
 
 
 def _uncounted(said: re.Match[str]) -> str:
@@ -331,7 +317,7 @@ def _label_restated(label: str, after: str, names: frozenset[str]) -> str:
 
     def said_again(m: re.Match[str]) -> str:
         word = m[0].lower()
-        named = MEANING.fullmatch(word) or _content_word(word) or word in names
+        named = MEANING.fullmatch(word) or names_content(word, names=names)
         return " " if named and (word in again or word.removesuffix("s") in again) else m[0]
 
     return re.sub(r"[A-Za-z]+", said_again, label).strip()
@@ -453,7 +439,7 @@ def person(speaker: str) -> bool:
         return False
     if words[-1] in frame_words()["function"] or words[-1] in ("who", "which", "everything", "nothing"):
         return False  # "What needs to happen is ...": no speaker
-    return not any(_content_word(w) for w in words)
+    return not any(names_content(w) for w in words)
 
 
 @lru_cache(maxsize=16384)  # pure; a sentence is read again for each restated reading
@@ -516,7 +502,7 @@ _NAME = re.compile(r"^\s*[-\u2013\u2014~]*\s*(?-i:(?:The\s+)?[A-Z][a-z]+(?:\s+[A
 def writer_name(text: str, names: frozenset[str] = frozenset()) -> bool:
     """Whether no word of the name `text` is a block, place, action, content word or thing (`names`)."""
     words = re.findall(r"[a-z]+", text.lower())
-    known = (MEANING.search(w) or _ACTION.search(w) or _content_word(w) or w in names for w in words)
+    known = (MEANING.search(w) or _ACTION.search(w) or names_content(w, names=names) for w in words)
     return bool(_NAME.match(text)) and not any(known)
 
 

@@ -55,7 +55,6 @@ from nl2hltl2plan.language.content_words import (
     word_categories,
 )
 from nl2hltl2plan.language.grounding import find_mentions
-from nl2hltl2plan.language.numbered_steps import orders_by_label
 
 __all__ = [
     "CountedHeading",
@@ -314,11 +313,9 @@ _PARTS_IN_ORDER = re.compile(
 
 def row_labels_dropped(text: str, dropped: list[str]) -> str:
     """`text` without the labels of its rows and items (see above), each added to `dropped` as said; a
-    sentence that works "the rows (items) in order" is "Do them in that order", labelled or not. Where a
-    sentence orders the items by their labels ("Item 2 before item 1"), the labels number steps and stay
-    (`numbered_steps`, h292)."""
-    if orders_by_label(text):
-        return text
+    sentence that works "the rows (items) in order" is "Do them in that order", labelled or not. (Where a
+    sentence orders the items by their labels, "Item 2 before item 1", the labels number steps: the
+    household reader leaves them to `numbered_steps` and does not ask this, h292.)"""
 
     def drop(m: re.Match[str]) -> str:
         if m["name"] and (m["name"].lower() in _blocking() or m["name"].lower() in _verbs()):

@@ -151,14 +151,13 @@ def step_order(text: str) -> str:
     _person_order(text)
     if len(_marks(text)) >= 2:
         text = _DASHED_ORDER.sub(". ", text)
-    sentences = re.split(r"(?<=[.!?])\s+", text.strip())
-    said = [(k, m) for k, s in enumerate(sentences) for p in _SAID if (m := p.match(_unpleased(s)))]
+    sentences = _sentences(text)
+    said = _orders_said(sentences)
     if len(said) == 1 and _bare_without_steps(said[0][1], sentences, said[0][0]):
         # "Put the pen in the box. Do 2 before 1.": the line was read as nothing, at exit 0
         raise HTTError(f"{said[0][1][0]!r} names steps by number, but the instruction numbers fewer than two")
     if not said:
-        loose = [s for k, s in enumerate(sentences)
-                 if k and _LOOSE.match(s.strip()) and _steps_of(sentences, k)]
+        loose = [sentences[k] for k in _loose_orders(sentences) if _steps_of(sentences, k)]
         if loose:
             said_as = loose[0].strip(" .")
             raise HTTError(f"{said_as!r}: say the steps' order one way (\"do step 2 first\")")
@@ -213,11 +212,26 @@ def _any_order(steps: dict[int, str], named: list[int]) -> str:
 
 def orders_by_label(text: str) -> bool:
     """Whether a sentence of `text` orders steps by their labels ("Do (3) first", "Items 3 and 4 after item
-    1"): a list of "(1) ... (2) ..." is then left for `step_order`, which reads the order or refuses it."""
-    sentences = re.split(r"(?<=[.!?])\s+", text.strip())
-    return any(p.match(_unpleased(s)) for s in sentences for p in _SAID) or any(
-        _LOOSE.match(s.strip()) for s in sentences[1:]
-    )
+    1"): the household reader asks it once, before its strippers take labels off (`world_readers`), so
+    that a list of "(1) ... (2) ..." or "Item 1 - ..." is left for `step_order`, which reads the order or
+    refuses it."""
+    sentences = _sentences(text)
+    return bool(_orders_said(sentences) or _loose_orders(sentences))
+
+
+def _sentences(text: str) -> list[str]:
+    return re.split(r"(?<=[.!?])\s+", text.strip())
+
+
+def _orders_said(sentences: list[str]) -> list[tuple[int, re.Match[str]]]:
+    """Each sentence that says an order by step labels (`_SAID`), with its place among `sentences`."""
+    return [(k, m) for k, s in enumerate(sentences) for p in _SAID if (m := p.match(_unpleased(s)))]
+
+
+def _loose_orders(sentences: list[str]) -> list[int]:
+    """The places of the sentences after the first that open with any other order by step labels
+    (`_LOOSE`: "2 before 1, and 4 last")."""
+    return [k for k, s in enumerate(sentences) if k and _LOOSE.match(s.strip())]
 
 
 def _steps_of(sentences: list[str], k: int) -> dict[int, str]:

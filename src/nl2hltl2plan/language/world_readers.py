@@ -54,7 +54,7 @@ from nl2hltl2plan.language.landmarks import put_away_unread
 from nl2hltl2plan.language.learned.request_units import frames_classified
 from nl2hltl2plan.language.negation_forms import instead_said, untreated_said
 from nl2hltl2plan.language.negations import exclusions_unread, unmoved_said
-from nl2hltl2plan.language.numbered_steps import step_order
+from nl2hltl2plan.language.numbered_steps import orders_by_label, step_order
 from nl2hltl2plan.language.questions import answered
 from nl2hltl2plan.language.request_times import (
     deadline_note,
@@ -180,9 +180,12 @@ class _HouseholdReader(SharedGrammar):
         # reasons a household request gives ("so it stays cold") ask for nothing (a tabletop "so that" states)
         said = without_patter(without_apologies(answered(" ".join(lines)), _names_a_thing)).strip()
         text = without_greetings(said, _names_a_thing)
+        # labels an order sentence names ("Item 2 before item 1", "(1) A (2) B. Do (3) first.") number steps:
+        # read once, before the strippers below take labels off, and left for `step_order` (h292)
+        labels_ordered = orders_by_label(text)
         # a row's or an item's label ("Row 1 -", "item 3 -"): before the frame rule, which dropped some
         self.headings = []
-        text = row_labels_dropped(text, self.headings)
+        text = text if labels_ordered else row_labels_dropped(text, self.headings)
         self.frames = []
         # ("Night, Mug", "Later, Bread": a closing thing's name, taken out below and named unread, h307)
         self.later_days = later_days_unread(text) + thing_signed(text, _names_a_thing)
@@ -195,7 +198,8 @@ class _HouseholdReader(SharedGrammar):
         # check 1 asks about (h287)
         text = frames_classified(text, _thing_words(text), self.frames)
         # "Mom says put ...", "P.S.", "I was hoping you could"; "the mug stays put" is "don't move the mug"
-        return unmoved_said(untreated_said(instead_said(without_framing(without_reasons(text)))))
+        framed = without_framing(without_reasons(text), labels_ordered)
+        return unmoved_said(untreated_said(instead_said(framed)))
 
     def prepared(self, instruction: str) -> str:
         named = descriptive_names(household_forms(instruction), set(self.world.object_types()))

@@ -14,12 +14,12 @@ validation (`report`).
 
 The reading side (`frames_classified`) drops a unit only where the model is sure it is FRAME and no word of
 it names an object, action, count, negation or order (check 1's content: such a unit is kept, and check 1
-refuses it as before). It is measured and on by default (`ON`; results/language/h287.md).
+refuses it as before). It is measured and on by default (`config.reading_settings`, which documents
+`NL2HLTL2PLAN_REQUEST_UNITS`; results/language/h287.md).
 """
 
 from __future__ import annotations
 
-import os
 import random
 import re
 import time
@@ -30,7 +30,10 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from nl2hltl2plan.config.reading_settings import request_units_on
 from nl2hltl2plan.io import atomic_path
+from nl2hltl2plan.language.content_words import categories, check1_categories, frame_keeps, names_content
+from nl2hltl2plan.language.grounding import find_mentions
 
 if TYPE_CHECKING:
     from nl2hltl2plan.language.learned.compose import Synth
@@ -38,10 +41,6 @@ if TYPE_CHECKING:
 
 ARTIFACT = "request_model.npz"
 SENTENCES_FILE = Path(__file__).with_name("request_frames.txt")
-# `frames_classified` drops units by default (measured and adopted: over every committed set 5 more lines
-# convert and none is lost or read wrong; results/language/h287.md); NL2HLTL2PLAN_REQUEST_UNITS=0 turns it off
-ON_ENV = "NL2HLTL2PLAN_REQUEST_UNITS"
-ON = True
 THRESHOLD = 0.9  # P(FRAME) at or above which a unit is dropped
 N_MESSAGES = 4000
 
@@ -73,9 +72,6 @@ def units(text: str) -> list[tuple[int, int]]:
 @lru_cache(maxsize=16384)
 def _kinds(unit: str) -> frozenset[str]:
     """What a unit names by the package's lexicon: thing, verb, count, negation, order, person, time."""
-    from nl2hltl2plan.language.content_words import categories, check1_categories
-    from nl2hltl2plan.language.grounding import find_mentions
-
     out = {"thing"} if find_mentions(unit.lower()) else set()
     for w in _WORD.findall(unit.lower()):
         cats = categories(w) | check1_categories(w)
@@ -87,22 +83,20 @@ def _kinds(unit: str) -> frozenset[str]:
 
 @lru_cache(maxsize=1)
 def _keeps() -> frozenset[str]:
-    """The words that keep a fragment for the general filler rule (`frame_keeps.txt`: a thing added, a
-    relation, a wait, a time, an order) and the words that point at the tasks or their order
-    (`request_frames.txt`'s `keeps`: "Do them in that order.")."""
-    from nl2hltl2plan.language.content_words import word_categories
-
-    own = {w for line in _sentence_pools()["keeps"].get("words", []) for w in line.split()}
-    return frozenset(own).union(*word_categories("frame_keeps.txt").values())
+    """The words that point at the tasks or their order (`request_frames.txt`'s `keeps`: "Do them in that
+    order.")."""
+    return frozenset(w for line in _sentence_pools()["keeps"].get("words", []) for w in line.split())
 
 
 def content(unit: str) -> bool:
     """Whether a unit names an object, an action, a count (a number too, unless a clock's), a negation or
-    an order (check 1's content), or holds a word that keeps a fragment (`_keeps`)."""
+    an order (check 1's content: the kinds `content_words.names_content` asks with `refused_only`), or
+    holds a word that keeps a fragment (`frame_keeps.txt`) or points at the tasks (`_keeps`)."""
     said = re.sub(r"\d+:\d\d", " ", unit.lower())
-    if re.search(r"\d", said) or set(_WORD.findall(said)) & _keeps():
+    if re.search(r"\d", said) or set(_WORD.findall(said)) & (frame_keeps() | _keeps()):
         return True
-    return bool(_kinds(unit) & {"thing", "verb", "count", "noun", "negation", "order"})
+    words = _WORD.findall(unit.lower())
+    return bool(find_mentions(unit.lower())) or any(names_content(w, refused_only=True) for w in words)
 
 
 def _shape(unit: str) -> list[str]:
@@ -279,10 +273,10 @@ def load_request_model() -> RequestModel:
 def frames_classified(text: str, names: frozenset[str], dropped: list[str]) -> str:
     """`text` without the units the model calls FRAME at THRESHOLD that name nothing check 1 asks about
     (`content`, nor a word of the world's `names`); each dropped unit is added to `dropped` (the result's
-    assumptions). Unchanged with NL2HLTL2PLAN_REQUEST_UNITS=0 (`ON` otherwise), and when every unit would
-    go."""
+    assumptions). Unchanged with NL2HLTL2PLAN_REQUEST_UNITS=0 (`config.reading_settings`: on by default),
+    and when every unit would go."""
     ranges = units(text)
-    if os.environ.get(ON_ENV, "1" if ON else "0") != "1" or len(ranges) < 2:
+    if len(ranges) < 2 or not request_units_on():
         return text
     probs = load_request_model().frame_probability(text, ranges)
     kept: list[str] = []

@@ -42,6 +42,11 @@ nothing comes before yet) to earlier ones; a pair that would still close a cycle
 from __future__ import annotations
 
 import re
+from functools import cache
+from pathlib import Path
+
+from nl2hltl2plan.language.content_words import categories, free_order_remarks
+from nl2hltl2plan.language.courtesy import courtesy_words
 
 POINTING = ("REF", "RPRE", "ALL")  # relations to a named earlier span, or to all of them
 _AFTERTHOUGHT = re.compile(r"\boh\b", re.I)  # "Oh and Z": a request of its own (`courtesy.without_courtesy`)
@@ -227,9 +232,6 @@ def sentences_left_out(text: str, spans: list[tuple[int, int]]) -> list[str]:
     >>> sentences_left_out("Put the egg in the fridge. Go Rovers! Thanks.", [(0, 25)])
     ['Go Rovers']
     """
-    from nl2hltl2plan.language.content_words import categories, free_order_remarks
-    from nl2hltl2plan.language.courtesy import courtesy_words
-
     plain = courtesy_words("courtesy_word") | courtesy_words("word") | courtesy_words("closing")
     left = []
     for m in _SENTENCE.finditer(text):
@@ -239,7 +241,7 @@ def sentences_left_out(text: str, spans: list[tuple[int, int]]) -> list[str]:
         # that's done, ...") may be what the reading's order says: not frame; a verb alone ("go") names
         # no step
         said = {c for w in words for c in categories(w)} - _NO_STEP
-        ordered = free_order_remarks(m[0]) or _ORDER_NOUNS & set(words)  # ("In that order please.")
+        ordered = free_order_remarks(m[0]) or _order_nouns() & set(words)  # ("In that order please.")
         if not touched and not said and not ordered and any(w not in plain for w in words):
             left.append(m[0].strip(" .!?;"))
     return left
@@ -247,5 +249,11 @@ def sentences_left_out(text: str, spans: list[tuple[int, int]]) -> list[str]:
 
 # a verb's kinds that name no step alone ("Go Rovers!", "Miss you loads.": check 1 reads no task in them)
 _NO_STEP = frozenset({"verb_step", "verb_any"})
-# the nouns that name an order ("in that order", "in this sequence"), which no content-word kind lists
-_ORDER_NOUNS = frozenset({"order", "sequence"})
+_ORDER_NOUNS = Path(__file__).with_name("order_nouns.txt")
+
+
+@cache
+def _order_nouns() -> frozenset[str]:
+    """The nouns that name an order ("in that order", "in this sequence": `order_nouns.txt`)."""
+    text = _ORDER_NOUNS.read_text()
+    return frozenset(w for line in text.splitlines() if not line.startswith("#") for w in line.split())
