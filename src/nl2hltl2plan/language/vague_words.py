@@ -1,6 +1,7 @@
 """What no spec says at all, judged in word accounting (`accounting.account`): a question, a vague amount
 or place, a time, waiting on a state or an event, an optional step, an instruction given before. Apart from
-`unsupported_steps` (steps that no base task does): these words name no step at all."""
+`unsupported_steps` (steps that no base task does): these words name no step at all. The phrases of a
+repetition, a condition and a duration's numbers and units are in `vague_words.txt` (h311)."""
 
 from __future__ import annotations
 
