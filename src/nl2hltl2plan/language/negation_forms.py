@@ -89,3 +89,31 @@ def untreated_said(text: str) -> str:
         return f"{m['clause']}. Do not {verb} the {named[0].surface}"
 
     return _UNTREATED.sub(banned, text)
+
+
+# "keep your hands off the vases", "hands off the watch", "stay away from the candles": a ban on touching the
+# thing said with no negation word, which no rule read (trust_h311dev: the key chain put in the box at exit 0,
+# the ban dropped); said as the "don't touch" it is, where the lexicon names the one thing
+_HANDS_OFF = re.compile(
+    r"(?P<lead>^|(?<=[.;!?,])\s*|(?<=\band\s)|(?<=\bbut\s)|(?<=\bplease\s))(?:(?:keep|take|get)\s+your\s+hands\s+"
+    r"off|hands\s+off|(?:stay|keep)\s+away\s+from)(?:\s+of)?\s+(?P<x>(?:the|a|an|both|all\s+the|my|your)\s+[a-z]+"
+    r"(?:\s+[a-z]+)?)(?=\s*(?:[.;!?,]|$|(?:and|but|then|while|please)\b))",
+    re.I,
+)
+
+
+def untouched_said(text: str) -> str:
+    """`text` with a ban on touching a thing said without a negation word as "don't touch" the thing (the
+    household reader's `as_read`), where the lexicon names exactly the words after it.
+
+    >>> untouched_said("Put the key chain in the box but keep your hands off the vases.")
+    "Put the key chain in the box but don't touch the vases."
+    """
+
+    def banned(m: re.Match[str]) -> str:
+        named = find_mentions(m["x"].lower())
+        if len(named) != 1 or m["x"].lower()[named[0].char_end :].strip():
+            return m[0]
+        return f"{m['lead']}don't touch {m['x']}"
+
+    return _HANDS_OFF.sub(banned, text)

@@ -519,14 +519,16 @@ def until_guard(instruction: str, tok: tuple[str, int, int], ordered: bool) -> b
 # "leave the mug alone"): it is not to be moved; read before, "stays put" put the mug where the last thing
 # went, at exit 0 (h205)
 _NP = r"(?:the|a|an|both|all\s+the)\s+[a-z]+(?:\s+[a-z]+){0,2}?"
-_UNMOVED = r"(?:put|there|(?:right\s+)?where\s+(?:it\s+is|they\s+are)|as\s+(?:it\s+is|they\s+are|is)|alone)"
+_UNMOVED = (
+    r"(?:put|there|(?:right\s+)?where\s+(?:it\s+is|they\s+are)|as\s+(?:it\s+is|they\s+are|is)|alone|be)"
+)
 # "the keys stay on the coffee table", "the pot remains on the stove": where it is now, kept (h236); a placing
 # said so ("put the keys on the table") is a task, and "leave it on the table" stays one
 _WHERE_IT_STAYS = r"(?:on|in|inside|at)\s+(?:the|its|their)\s+[a-z]+(?:\s+[a-z]+)?"
 _KEPT_AS_IT_IS = re.compile(
     rf"(?:^|(?<=[.;!?])\s+|(?<=,)\s+|(?<=\band\s)|(?<=\bbut\s))"
     rf"(?:(?:(?:make|be)\s+sure\s+(?:that\s+)?)?(?P<x>{_NP})\s+(?:(?:can|should|must|will)\s+)?(?:stays?|remains?)"
-    rf"(?:\s+{_UNMOVED}|\s+{_WHERE_IT_STAYS})?|(?:just\s+)?(?:leave|keep)\s+(?P<y>{_NP})\s+{_UNMOVED})"
+    rf"(?:\s+{_UNMOVED}|\s+{_WHERE_IT_STAYS})?|(?:just\s+)?(?:leave|leaving|keep)\s+(?P<y>{_NP})\s+{_UNMOVED})"
     rf"(?=\s*(?:[.;!?,]|$))",
     re.I,
 )
@@ -545,10 +547,12 @@ def unmoved_said(text: str) -> str:
         named = find_mentions(thing.lower())
         if len(named) != 1 or thing.lower()[named[0].char_end :].strip():
             return m[0]
-        if m[0].endswith("alone") and not m[0][:1].isspace() and m.start():
-            return m[0]  # "... and leave X alone": untouched, more than unmoved (users_h195held's truth)
         lead = m[0][: len(m[0]) - len(m[0].lstrip())]
-        return f"{lead}don't move {thing[0].lower()}{thing[1:]}"
+        # "... and leave X alone", ", leaving X be": untouched, more than unmoved (users_h195held's truth;
+        # h311: it was left unread); a sentence of its own ("Leave the mug alone.") stays h205's "don't move"
+        inside = not lead or text[: m.start()].rstrip().endswith(",")
+        ban = "touch" if m[0].endswith(("alone", " be")) and m.start() and inside else "move"
+        return f"{lead}don't {ban} {thing[0].lower()}{thing[1:]}"
 
     return _KEPT_AS_IT_IS.sub(unmoved, text)
 

@@ -33,6 +33,7 @@ from nl2hltl2plan.language.picked_states import picked_states
 from nl2hltl2plan.language.prepositions import a_source
 from nl2hltl2plan.language.statements import REFERENCE
 from nl2hltl2plan.language.task_specs import BaseTaskSpec
+from nl2hltl2plan.language.vague_words import counted
 
 # "bring it back", "then back again", "return it", "put it back where it was", "back in its place": to
 # where it was (`put_back.WHERE_IT_WAS`), which no base task names ("at the back" is a place); "three times"
@@ -46,8 +47,10 @@ _RETURN_VERB = re.compile(
     + _ENDS.format(r"(?!\s+(?:the|a|an|your|my)\b)")
 )
 _LEFT_OUT = re.compile(r"\bleave (?:\w+ ){0,3}out\b(?! of)")  # "leave one out": an exception, as "except one"
+# (any count in digits or words, `vague_words.counted`: "eleven times", "a couple of times", h311)
 _TIMES = re.compile(
-    r"\b(?:\d+|two|three|four|five|six|seven|eight|nine|ten|several|many|multiple|a few) times\b"
+    rf"\b(?:{counted()}|several|many|multiple|a few|a couple(?: of)?|a number of|a dozen|dozens of|numerous)"
+    r"(?:\s+more)? times\b"
 )
 
 

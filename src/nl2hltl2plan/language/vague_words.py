@@ -1,12 +1,14 @@
 """What no spec says at all, judged in word accounting (`accounting.account`): a question, a vague amount
 or place, a time, waiting on a state or an event, an optional step, an instruction given before. Apart from
-`unsupported_steps` (steps that no base task does): these words name no step at all."""
+`unsupported_steps` (steps that no base task does): these words name no step at all. The phrases of a
+repetition, a condition and a duration's numbers and units are in `vague_words.txt` (h311)."""
 
 from __future__ import annotations
 
 import re
+from functools import cache
 
-from nl2hltl2plan.language.content_words import Unread
+from nl2hltl2plan.language.content_words import Unread, phrase_list_pattern, phrase_words
 from nl2hltl2plan.language.grounding import Mention, sentence_start
 from nl2hltl2plan.language.piece_words import unsure_pieces
 
@@ -45,21 +47,57 @@ _CHORE = re.compile(
     r"(?=\s*(?:[,.;!?]|$|(?:and|then|after|afterwards|please|too|as\s+well)\b))"
 )
 _PLACE_AFTER = re.compile(r"[^,.;!?]*?\b(?:in|into|on|onto|inside|under|to)\b")
-_NUMBER = r"(?:\d+|a|an|one|two|three|four|five|six|ten|fifteen|twenty|thirty|a few|a couple of)"
 # "in a second box": the ordinal before a thing ("another box"), no time (h190); "in a second, put ..." stays
 _ORDINAL_SECOND = r"(?<!\ba second)|(?<=\ba second)(?!\s+(?!(?:and|or|then|to|so|please)\b)[a-z])"
-_TIME = re.compile(
-    rf"\b(?:(?:for|in|within|after)\s+{_NUMBER}\s+(?:seconds?|minutes?|mins?|hours?)(?:{_ORDINAL_SECOND})"
-    r"|for a (?:while|bit|moment)|(?:at|for|by|until)\s+\d{1,2}(?::\d\d)?(?:\s*(?:am|pm|o'clock))?"
+_CLOCK_TIME = (
+    r"|for a (?:little\s+|short\s+)?(?:while|bit|moment)"
+    r"|(?:at|for|by|until)\s+\d{1,2}(?::\d\d)?(?:\s*(?:am|pm|o'clock))?"
     r"|(?:before|after|around)\s+\d{1,2}(?::\d\d(?:\s*[ap]m)?|\s*(?:am|pm|o'clock))"
     r"|(?:in\s+the|during\s+the|this|every|each|tomorrow|at)\s+(?:morning|afternoon|evening|night)"
     r"|(?:every|each)\s+(?:single\s+|other\s+)?(?:day|week|month|weekday|weekend|hour|time))\b"
 )
+
+
+@cache
+def counted() -> str:
+    """A count in digits or spelled number words (vague_words.txt: "ninety", "forty-five", "one hundred"),
+    "and a half" after it, as a regular expression with no context and no flags."""
+    spelled = "|".join(sorted(phrase_words("vague_words.txt", "number"), key=len, reverse=True))
+    return rf"(?:\d+(?:\.\d+)?|(?:{spelled})(?:[-\s]+(?:{spelled}))*)(?:\s+and\s+a\s+half)?"
+
+
+@cache
+def _time() -> re.Pattern[str]:
+    """A duration or a wait counted in units of time ("for two minutes", "for ninety seconds", "in twenty
+    mins", "for half an hour", "for a minute or two", "for another ten minutes"), or a clock time. A count
+    in digits or number words needs no opener ("microwave it forty-five seconds"); "a", "a few" do ("for a
+    minute": "wait a minute" is no duration)."""
+    units = "|".join(sorted(phrase_words("vague_words.txt", "unit"), key=len, reverse=True))
+    loose = r"a|an|half\s+an?|a\s+half|a\s+few|a\s+couple(?:\s+of)?|several|a\s+number\s+of"
+    amount = rf"(?:{loose}|{counted()})(?:\s+(?:more|extra|additional|further|full|whole|good))?"
+    # "for another minute", "for an extra ten minutes", "for the next hour"
+    more = r"(?:another|an?\s+(?:extra|additional|further|full|whole|good)|the\s+(?:next|whole|entire|full))"
+    tail = r"(?:\s+(?:and\s+a\s+half|or\s+(?:so|two|three|more|\d+)))?"
+    opener = r"(?:for|in|within|after|about|around|roughly|approximately)"
+    opened = rf"{opener}\s+(?:{more}(?:\s+{amount})?|{amount})"
+    return re.compile(
+        rf"\b(?:(?:{opened}|{counted()})\s+(?:{units})\b{tail}(?:{_ORDINAL_SECOND}){_CLOCK_TIME}", re.I
+    )
+
+
+@cache
+def _phrases(kind: str) -> re.Pattern[str]:
+    """The phrases of one kind of vague_words.txt (`repetition`, `condition`), each a whole word sequence; a
+    `_closing` kind's only where it closes its clause ("rinse and repeat.", not "repeat with the cup")."""
+    closing = r"(?=\s*(?:[,.;:!?)]|$))" if kind.endswith("_closing") else r"\b"
+    return re.compile(rf"\b{phrase_list_pattern('vague_words.txt', kind)}{closing}", re.I)
+
+
 # "when the microwave is free", "once the drawer is empty": a state no task brings about
 _STATE_CONDITION = re.compile(
-    r"\b(?:when|whenever|once|while|as soon as|until)\s+(?:the|a|an|my|your|it|they)\b[^,.;!?]{0,30}?\b"
-    r"(?:is|are|gets|becomes)\s+(?:not\s+)?(?:free|empty|full|open|opened|closed|shut|ready|available|dirty|busy|"
-    r"occupied|wet|dry|off|on)\b(?!\s+(?:the|a|an|top)\b)"
+    r"\b(?:when|whenever|once|while|as soon as|until)\s+(?:the|a|an|my|your|it|they)\b[^,.;!?]{0,30}?"
+    r"(?:\b(?:is|are|gets|becomes)|['’](?:s|re))\s+(?:not\s+)?(?:free|empty|full|open|opened|closed|shut|ready|"
+    r"available|dirty|busy|occupied|wet|dry|off|on)\b(?!\s+(?:the|a|an|top)\b)"
 )
 # "when the movie ends", "before the guests arrive": an event of something that is no thing of the world (a
 # named thing's event, "after the apple finishes cooling", is left to the readers)
@@ -183,7 +221,7 @@ def vague_words(instruction: str, mentions: list[Mention], chosen: bool = False)
     ]
     chore = "a chore with no thing: say what to put where"
     out += [Unread(m[0], "action", chore) for m in _CHORE.finditer(lowered)]
-    out += [Unread(m.group(0), "count", "no base task takes a time") for m in _TIME.finditer(lowered)]
+    out += [Unread(m.group(0), "count", "no base task takes a time") for m in _time().finditer(lowered)]
     out += [
         Unread(m[0], "place", "a choice left open: say which one")
         for m in _CHOICE.finditer(lowered)
@@ -220,7 +258,11 @@ def vague_words(instruction: str, mentions: list[Mention], chosen: bool = False)
     out += [Unread(m[0], "action", _ONE_ROBOT_WHY) for m in _ONE_ROBOT.finditer(lowered)]
     out += [Unread(m[0], "order", _BETWEEN_WHY) for m in _BETWEEN_TASKS.finditer(lowered)]
     again = "no base task is done more than once: say each time as its own task"
-    out += [Unread(m[0], "count", again) for m in _AGAIN.finditer(lowered)]
+    repeated = (*_AGAIN.finditer(lowered), *_phrases("repetition").finditer(lowered))
+    repeated += (*_phrases("repetition_closing").finditer(lowered),)
+    out += [Unread(m[0], "count", again) for m in repeated]
+    waits = "no base task waits on a condition: say what to do"
+    out += [Unread(m[0], "condition", waits) for m in _phrases("condition").finditer(lowered)]
     kind = "a thing told from another of its type by a word no spec says (its atoms name types)"
     out += [Unread(m[0], "object", kind) for m in _ONE_OF_A_KIND.finditer(lowered)]
     fallback = "a place to fall back on: no base task tries one place and then another; say which"

@@ -52,7 +52,7 @@ from nl2hltl2plan.language.household_forms import household_forms
 from nl2hltl2plan.language.household_words import contents_hint, descriptive_name_notes, descriptive_names
 from nl2hltl2plan.language.landmarks import put_away_unread
 from nl2hltl2plan.language.learned.request_units import frames_classified
-from nl2hltl2plan.language.negation_forms import instead_said, untreated_said
+from nl2hltl2plan.language.negation_forms import instead_said, untouched_said, untreated_said
 from nl2hltl2plan.language.negations import exclusions_unread, unmoved_said
 from nl2hltl2plan.language.numbered_steps import orders_by_label, step_order
 from nl2hltl2plan.language.questions import answered
@@ -198,8 +198,8 @@ class _HouseholdReader(SharedGrammar):
         # check 1 asks about (h287)
         text = frames_classified(text, _thing_words(text), self.frames)
         # "Mom says put ...", "P.S.", "I was hoping you could"; "the mug stays put" is "don't move the mug"
-        framed = without_framing(without_reasons(text), labels_ordered)
-        return unmoved_said(untreated_said(instead_said(framed)))
+        text = untreated_said(instead_said(without_framing(without_reasons(text), labels_ordered)))
+        return unmoved_said(untouched_said(text))
 
     def prepared(self, instruction: str) -> str:
         named = descriptive_names(household_forms(instruction), set(self.world.object_types()))
