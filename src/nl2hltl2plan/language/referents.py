@@ -353,8 +353,11 @@ def _reference(text: str, types: set[str], named_before: set[str]) -> str | None
         m = named[0]
         before = words[max(0, m.start - 2) : m.start]
         definite = bool(before) and before[-1] in DEFINITE and not set(before) & _NOT_NAMED_BEFORE
-        if definite and m.entry.phrase in named_before:
-            return " ".join(words[m.start - 1 : m.end])
+        # a bare noun right after the verb, as notes write it ("knife in mug and mug on table": h300's line
+        # 90 split into two placings at exit 0) names the one said before as "the mug" does
+        bare = m.start == 1 and words[0] not in DETERMINERS and not m.plural
+        if (definite or bare) and m.entry.phrase in named_before:
+            return " ".join(words[m.start - definite : m.end])
         return None
     return next((w for w in words if w in _BACK), None)
 
