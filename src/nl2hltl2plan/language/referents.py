@@ -345,17 +345,13 @@ def _reference(text: str, types: set[str], named_before: set[str]) -> str | None
     `named_before` ("the kettle", "it"), None when the text names another one ("a potato", "another
     kettle", "the other kettle", "a second kettle"), one by another word or by where it is found ("the
     cloth from the cabinet"), or none at all."""
-    if not text:
-        return None
-    words = [w for w, _, _ in tokens(text)]
-    named = [m for m in find_mentions(text) if set(m.entry.types) & types]
+    words = [w for w, _, _ in tokens(text or "")]
+    named = [m for m in find_mentions(text or "") if set(m.entry.types) & types]
     if named:
         m = named[0]
         before = words[max(0, m.start - 2) : m.start]
         definite = bool(before) and before[-1] in DEFINITE and not set(before) & _NOT_NAMED_BEFORE
-        # a bare noun right after the verb, as notes write it ("knife in mug and mug on table": h300's line
-        # 90 split into two placings at exit 0) names the one said before as "the mug" does
-        bare = m.start == 1 and words[0] not in DETERMINERS and not m.plural
+        bare = m.start == 1 and words[0] not in DETERMINERS and not m.plural  # "mug on table" (h300): "the mug"
         if (definite or bare) and m.entry.phrase in named_before:
             return " ".join(words[m.start - definite : m.end])
         return None
