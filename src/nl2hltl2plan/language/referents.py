@@ -351,7 +351,7 @@ def _reference(text: str, types: set[str], named_before: set[str]) -> str | None
         m = named[0]
         before = words[max(0, m.start - 2) : m.start]
         definite = bool(before) and before[-1] in DEFINITE and not set(before) & _NOT_NAMED_BEFORE
-        bare = m.start == 1 and words[0] not in DETERMINERS and not m.plural  # "mug on table" (h300): "the mug"
+        bare = m.start == 1 and words[0] not in DETERMINERS and not m.plural  # "mug on table": "the mug"
         if (definite or bare) and m.entry.phrase in named_before:
             return " ".join(words[m.start - definite : m.end])
         return None
