@@ -98,3 +98,13 @@ def test_then_before_a_free_order_still_orders():
     assert [t.summary() for t in res.tasks] == [
         "place CD -> Desk", "examine_in_light Watch under DeskLamp", "examine_in_light Pencil under DeskLamp"
     ]
+
+
+@needs_data
+def test_a_glass_bowl_is_a_bowl():
+    """Before: "'glass bowl' (place): no base task uses it" ("glass" read as the drinking glass)."""
+    res = translate(
+        "put a pen in the glass bowl and the bowl on the desk", shared_world("FloorPlan301"), build=False,
+        actions="none",
+    )
+    assert not res.partial and [t.summary() for t in res.tasks] == ["place_in_container Pen in Bowl -> Desk"]
