@@ -232,6 +232,10 @@ def _is_heading(words: str) -> bool:
     if not named:
         return False
     counted = [w for w in said if w in _COUNT_WORDS or w.isdigit()]
+    # "armchair: 2 newpapers + 2 cards.": counted things joined by "and" are a list, not a heading's name
+    # (h300's line 93 dropped both tasks, its head "cards" taken for a document's)
+    if any(w == "and" and (n in _COUNT_WORDS or n.isdigit()) for w, n in zip(said, said[1:], strict=False)):
+        return False
     if counted and not (said[0] in kinds or said[-2:-1] == counted[-1:]):  # "Three jobs", "Ticket 2291"
         return False
     for word in said:

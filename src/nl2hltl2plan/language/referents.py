@@ -282,7 +282,8 @@ def place_then_moved(tasks: Sequence[BaseTaskSpec], before: Sequence[tuple[str, 
         if not named or not _moves(later) or (later.id, named[-1].id) in before:
             continue
         shared = set(named[-1].receptacle or ()) & set(later.object)
-        said = _reference(later.text, shared, {w for t in named for w in _words_for(t.text, shared)})
+        # a bare noun too: "knife in mug and mug on table" (h300's line 90 split into two placings)
+        said = _reference(later.text, shared, {w for t in named for w in _words_for(t.text, shared)}, True)
         if said is None or said in _BACK:
             continue
         thing = camel_words(sorted(shared)[0])
@@ -340,21 +341,20 @@ def _words_for(text: str, types: set[str]) -> set[str]:
     return {m.entry.phrase for m in find_mentions(text) if set(m.entry.types) & types}
 
 
-def _reference(text: str, types: set[str], named_before: set[str]) -> str | None:
+def _reference(text: str, types: set[str], named_before: set[str], bare: bool = False) -> str | None:
     """The words of a task's text that refer back to a thing of `types` named before by one of
     `named_before` ("the kettle", "it"), None when the text names another one ("a potato", "another
     kettle", "the other kettle", "a second kettle"), one by another word or by where it is found ("the
     cloth from the cabinet"), or none at all."""
-    if not text:
-        return None
-    words = [w for w, _, _ in tokens(text)]
-    named = [m for m in find_mentions(text) if set(m.entry.types) & types]
+    words = [w for w, _, _ in tokens(text or "")]
+    named = [m for m in find_mentions(text or "") if set(m.entry.types) & types]
     if named:
         m = named[0]
         before = words[max(0, m.start - 2) : m.start]
         definite = bool(before) and before[-1] in DEFINITE and not set(before) & _NOT_NAMED_BEFORE
-        if definite and m.entry.phrase in named_before:
-            return " ".join(words[m.start - 1 : m.end])
+        bare = bare and m.start == 1 and words[0] not in DETERMINERS and not m.plural  # "mug on table"
+        if (definite or bare) and m.entry.phrase in named_before:
+            return " ".join(words[m.start - definite : m.end])
         return None
     return next((w for w in words if w in _BACK), None)
 

@@ -481,7 +481,10 @@ def joins(d: Draft, fr: Frame, it: Item) -> bool:
         # a task that is done ("a clean mug under the coffee maker") and a clause that names the object again
         # with a destination of its own ("a warm mug in the cabinet"): a second task on another one; so is
         # "a" tomato after one was put somewhere (an indefinite article introduces another referent)
-        return not ((_done(d) or (_placed(d) and _indefinite(o))) and _restates(fr, it))
+        # and so is one treated again once done ("rinse a soap and put it in the drawer, then rinse the pink
+        # soap and drop it in the tub": h300's line 99 moved the first soap to the tub)
+        again = _done(d) and fr.cls in APPLIANCE_OF and any(f.cls == fr.cls for f, _ in d.frames)
+        return not (((_done(d) or (_placed(d) and _indefinite(o))) and _restates(fr, it)) or again)
     if puts_into(cur, fr, it):
         # "look at the box under the lamp, then put the keys in it": the box looked at is a new task's holder
         return not any(f.cls in {"light", "examine"} or f.light_on for f, _ in d.frames)

@@ -99,11 +99,18 @@ _LAMP_FIRST = re.compile(
     r"(?:using|with|by\s+the\s+light\s+of|in\s+the\s+light\s+of|under|by|beside|next\s+to|near)\s+"
     r"(?:the\s+|a\s+)?"
     r"(?P<lamp>(?:[a-z]+\s+)?lamp(?:\s+on\s+the\s+(?!same\b)[a-z]+)?)"
-    r"(?:\s+(?:switched|turned)\s+on|\s+on|\s+lit)?\s*,\s*"
-    rf"(?P<verb>{_LOOKING})\s+(?P<things>(?:the|a|an)\s[^.;!?]+?)"
-    r"(?P<tail>\s*,?\s*(?:in\s+(?:any|whatever|either|that|this)\s+order|one\s+(?:after\s+(?:the\s+other|another)|by\s+one)))?"
+    r"(?:(?:\s+(?:switched|turned)\s+on|\s+on|\s+lit)\s*,?\s*|\s*,\s*)"  # "with the lamp on look at"
+    rf"(?P<verb>{_LOOKING}|look)\s+(?P<things>(?:the|a|an|my|your|our|this|that)\s[^.;!?]+?)"
+    r"(?P<tail>\s*,?\s*(?:(?:in\s+)?(?:any|whatever|either|that|this)\s+order|one\s+(?:after\s+(?:the\s+other|another)|by\s+one)))?"
     r"(?=\s*(?:[.;!?]|$)|,?\s+(?:and\s+)?then\b|,\s+and\s+(?!(?:the|a|an)\s))",
     re.IGNORECASE,
+)
+
+# "lamp on, look at the cd", "lamp on and check out a pen" (h300's notes): the switching on, verb left out
+_LAMP_ON = re.compile(
+    r"(?:(?<=^)|(?<=[.;!?,]\s)|(?<=\bthen\s))(?:(?:the|my|a)\s+)?(?P<lamp>(?:[a-z]+\s+)?(?:lamp|light))\s+on"
+    rf"(?:\s*,\s*|\s+)(?:and\s+)?(?:then\s+)?(?={_LOOKING}\b)",
+    re.I,
 )
 
 # "carry a pen while you turn on the lamp", "turn on the lamp while you hold the pen": the gerund the rules
@@ -145,6 +152,13 @@ def _lamp_used(m: re.Match[str]) -> str:
     return f"{m['verb']} {m['obj']} {'under' if listed else 'by the light of'} the {m['lamp']}"
 
 
+def _lamp_first(m: re.Match[str]) -> str:
+    """ "with the floor lamp on, look at X" -> "look at X under the floor lamp" (`_LAMP_FIRST`); a bare
+    "look the X" (h300's line 55) is "look at"."""
+    verb = "look at" if m["verb"].lower() == "look" else _A_LOOK_AT.sub("look at", m["verb"])
+    return f"{verb} {m['things']} under the {m['lamp']}{m['tail'] or ''}"
+
+
 def carried_to_lamp(text: str) -> str:
     """ "carry X to the lamp and turn it on" -> "look at X under the lamp" (`_CARRY_TO_LAMP`); `everyday`
     applies it before a repeat ("do the same with the statue") is written out, and `lamp_phrasing` again."""
@@ -156,8 +170,8 @@ def lamp_phrasing(text: str) -> str:
     text = _LOOK_OVER.sub(r"\1 at ", _LIGHT_FROM.sub("light of ", carried_to_lamp(text)))
     text = _SWITCH_ON.sub(lambda m: f"{'tT'[m[1][0].isupper()]}urn {m[2]} ", text)
     text = _GIVE_A_LOOK.sub(lambda m: f"{'lL'[m[0][0].isupper()]}ook at {m['np']}", text)
-    text = _LAMP_FIRST.sub(lambda m: f"{_A_LOOK_AT.sub('look at', m['verb'])} {m['things']} under the "
-                           f"{m['lamp']}{m['tail'] or ''}", text)
+    text = _LAMP_ON.sub(lambda m: f"{'tT'[m[0][0].isupper()]}urn on the {m['lamp']} and ", text)
+    text = _LAMP_FIRST.sub(_lamp_first, text)
     text = _USE_LAMP.sub(_lamp_used, text)
     text = _CHECK_OUT_FRONT.sub("check ", _CHECK_OUT.sub(r"check \1", text))
     text = _AGAIN_AFTER_LAMP.sub(lambda m: m["lamp"] + ". Then ", text)

@@ -26,6 +26,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import categories
+from nl2hltl2plan.language.grammar.word_tables import STATE_WORDS
 from nl2hltl2plan.language.grounding import SLICEABLE, Mention, find_mentions
 
 # --- the verb said once over two plural things (session 31's rule) ------------------------------------
@@ -136,6 +137,8 @@ def _apart(text: str, m: re.Match[str]) -> str | None:
     if said is None:
         return None
     head = text[: m.start()]
+    if (m["verb"] or "").lower() in _WISHES:  # "i also need two clean cloths, ...": "also wash a cloth ..."
+        head = re.sub(r"\b(?:i|we)\s+(?=(?:also\s+|still\s+)?$)", "", head, flags=re.I)
     body = said
     if not head.strip() or re.search(r"[.!?:;]\s*$", head):
         body = body[:1].upper() + body[1:]
@@ -180,11 +183,27 @@ def _noun_and_treatment(m: re.Match[str]) -> tuple[str | None, str | None]:
             return None, ""
         treat = _treatment(m["verb"])
         return f"slice of {whole.entry.phrase}", treat
-    thing = _one_thing(m["np"])
-    if thing is None or not thing.plural or thing.surface.lower() != m["np"].lower().strip():
+    np, state = _state_said(m["np"])
+    thing = _one_thing(np)
+    if thing is None or not thing.plural or thing.surface.lower() != np.lower().strip():
         return None, ""
     treat = _treatment(m["verb"])
+    if state and (treat == "" or (m["verb"] or "").lower() in _WISHES):
+        return thing.entry.phrase, state  # "I need two clean cloths, put one ...": wash each (h300's line 85)
     return thing.entry.phrase, treat
+
+
+# a pair's state said as its adjective ("two clean cloths", "two chilled apples"): the treatment of each
+_STATE_VERB = {"clean": "wash", "heat": "heat", "cool": "chill"}
+_WISHES = frozenset({"need", "want", "like"})  # "I need two clean cloths": a wish, its verb moves nothing
+
+
+def _state_said(np: str) -> tuple[str, str]:
+    """The pair's words without a treatment's state adjective before its thing, and that treatment's verb
+    ("clean cloths": "cloths", "wash"); the words as said and "" where none opens them."""
+    first, _, rest = np.strip().partition(" ")
+    verb = _STATE_VERB.get(STATE_WORDS.get(first.lower(), ""), "")
+    return (rest, verb) if verb and rest else (np, "")
 
 
 def _one_thing(words: str) -> Mention | None:
