@@ -134,6 +134,13 @@ _DECREED_AGAIN = re.compile(
     r"(?P<verb>[a-z]+)\b",
     re.I,
 )
+# (and its "place the said spoon upon ...": the thing just named, "it", where its noun was said before in the
+# sentence; left, "wash the spoon ... and place the said spoon" was read as two tasks of one spoon)
+_THE_SAID = re.compile(
+    r"\b(?P<verb>[a-z]+)\s+the\s+(?:said|aforesaid|aforementioned)\s+(?:[a-z]+\s+)??(?P<noun>[a-z]+)\b",
+    re.I,
+)
+_PLACING = frozenset("place put set move bring return store take carry transfer lay".split())
 _AGENT = re.compile(
     rf"{_LEAD}(?:(?:have|get|let)\s+{_WHO}\s+(?:to\s+)?|(?:tell|ask)\s+{_WHO}\s+to\s+)(?P<verb>[a-z]+)\b",
     re.I,
@@ -268,7 +275,15 @@ def _decreed(text: str) -> str:
         then = "then " if m["then"] else ""
         return f"{m['join']} {then}{m['verb']}" if m["verb"].lower() in VERBS else m[0]
 
-    return _DECREED_AGAIN.sub(again, said)
+    return _THE_SAID.sub(_said_thing, _DECREED_AGAIN.sub(again, said))
+
+
+def _said_thing(m: re.Match[str]) -> str:
+    """ "place the said spoon upon ..." -> "place it upon ..." where a placing verb takes it and "spoon" was
+    said earlier in the sentence."""
+    before = re.split(r"[.;!?]", m.string[: m.start()])[-1]
+    named = re.search(rf"\b{re.escape(m['noun'])}\b", before, re.I)
+    return f"{m['verb']} it" if named and m["verb"].lower() in _PLACING else m[0]
 
 
 def _made(m: re.Match[str]) -> str:
