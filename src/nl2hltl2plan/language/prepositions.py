@@ -82,7 +82,19 @@ def source_at(text: str, toks: list[tuple[str, int, int]], start: int) -> bool:
         return False
     while i > 0 and toks[i - 1][0] in LOCATIVE | {"out"}:
         i -= 1  # "from under the bed", "out of", "off of"
-    return toks[i][0] in SOURCE and (i == 0 or toks[i - 1][0] not in _ORDINALS)
+    return (toks[i][0] in SOURCE and (i == 0 or toks[i - 1][0] not in _ORDINALS)) or _where_it_is(toks, i)
+
+
+# "the plate thats in the microwave", "the mug that is under the coffee maker" (paper_h301): a relative clause
+# that says where the thing is now, as "from" does
+_RELATIVE = frozenset({"that", "which", "thats", "that's", "which's"})
+_IS = frozenset({"is", "are", "'s", "s"})
+
+
+def _where_it_is(toks: list[tuple[str, int, int]], i: int) -> bool:
+    j = i - 1 if i > 0 and toks[i - 1][0] in {"sitting", "lying", "standing", "now"} else i
+    j = j - 1 if j > 0 and toks[j - 1][0] in _IS else j
+    return j > 0 and toks[j - 1][0] in _RELATIVE
 
 
 def a_source(text: str, start: int) -> bool:
