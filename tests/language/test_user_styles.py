@@ -400,16 +400,9 @@ KNOWN_WRONG: set[str] = {
     "clean egg in garbage. Order does not matter.",
     "armchair: 2 newpapers + 2 cards. cofee table: 2 remotes. 1 remote on couch",
     # h301's held-out set (paper_h301; scored once at 8874c89c, results/language/h301.md): a landmark
-    # ("beside the bread") read as what is washed; "once you're done with those two" after its task gives no
-    # order; a container put "in a box; place the box on" read as two tasks, "Steps 1-3 in sequence" as frame
+    # ("beside the bread") read as what is washed (h310: now partial, its "Clause 4.1" heading unread)
     "Clause 4.1. The Contractor shall wash the spoon found on the counter beside the bread and shall "
     "thereafter place the said spoon upon the microwave stand. Time is of the essence.",
-    "Hold the clock from the desk under the desk lamp with it switched on, then the purple pillow from the "
-    "end of the bed. Put the box on the floor on the desk once you're done with those two.",
-    "Protocol 7, living room. Step 1: place the red vase from the table in a cardboard box; place the box on "
-    "the dining table. Step 2: transfer the blue credit card from behind the gold statue on the shelf to a "
-    "drawer. Step 3: two further vases from the lower shelf of the coffee table to the dining table. Steps "
-    "1-3 in sequence.",
 }
 
 

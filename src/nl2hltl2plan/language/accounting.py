@@ -312,7 +312,7 @@ def _locative(
         return False  # "look at the box": examined; "a slice of apple", "a glass of wine": cut, held (h216)
     if re.search(r"[,;:.!?]", instruction[toks[i][2] : toks[start][1]]):
         return False  # "in the drawer, also the ladle": a preposition's phrase never reaches over punctuation
-    if source_at(instruction, toks, start):  # "from under the bed", "out of": where it is
+    if source_at(instruction, toks, start, relative=True):  # "from under the bed", "out of", "that's in"
         return True
     if goes_to(toks, i):
         return False  # "put it in the microwave", "the slice goes in the fridge": where it goes

@@ -73,7 +73,7 @@ SOURCE = frozenset({"from", "off", "out"})
 _ORDINALS = frozenset({"first", "second", "third", "fourth", "last", "2nd", "3rd"})
 
 
-def source_at(text: str, toks: list[tuple[str, int, int]], start: int) -> bool:
+def source_at(text: str, toks: list[tuple[str, int, int]], start: int, relative: bool = False) -> bool:
     """Is the place phrase whose first word is token `start` of `text` (tokenized as `toks`) where a thing is
     taken from: its prepositions (`preposition_before`, never over punctuation) open with "from", "out" or
     "off", not after an ordinal ("the second from the top shelf")?"""
@@ -82,7 +82,21 @@ def source_at(text: str, toks: list[tuple[str, int, int]], start: int) -> bool:
         return False
     while i > 0 and toks[i - 1][0] in LOCATIVE | {"out"}:
         i -= 1  # "from under the bed", "out of", "off of"
-    return toks[i][0] in SOURCE and (i == 0 or toks[i - 1][0] not in _ORDINALS)
+    said_from = toks[i][0] in SOURCE and (i == 0 or toks[i - 1][0] not in _ORDINALS)
+    return said_from or (relative and _where_it_is(toks, i))
+
+
+# with `relative` (check 1, `accounting`): "the plate thats in the microwave", "the mug that is under the
+# coffee maker" (paper_h301), a relative clause that says where the thing is now, as "from" does (not for
+# the learned models' data labels, `learned.faithful`, which a change here would move)
+_RELATIVE = frozenset({"that", "which", "thats", "that's", "which's"})
+_IS = frozenset({"is", "are", "'s", "s"})
+
+
+def _where_it_is(toks: list[tuple[str, int, int]], i: int) -> bool:
+    j = i - 1 if i > 0 and toks[i - 1][0] in {"sitting", "lying", "standing", "now"} else i
+    j = j - 1 if j > 0 and toks[j - 1][0] in _IS else j
+    return j > 0 and toks[j - 1][0] in _RELATIVE
 
 
 def a_source(text: str, start: int) -> bool:

@@ -84,6 +84,16 @@ _DONE_AT_END = re.compile(
 )
 
 
+# "Both candles go in the cabinet, but they can wait till you've put the soap in the tub" (paper_h301): the
+# clause's task after the one that follows, as "..., but not until you've put ..." says (left, the wait was
+# read as nothing). Not "till you've done the lamp": a task named by its thing, which that form does not read
+_CAN_WAIT_TILL = re.compile(
+    r"\s*,\s*(?:but\s+)?(?:they|it|those|these|both)\s+(?:can|could|may)\s+wait\s+(?:till|until)\s+"
+    r"(?=you(?:'ve|\s+have)?\s+(?!(?:done|finished|completed|dealt)\b)[a-z]+\s)",
+    re.I,
+)
+
+
 def _order_tho(m: re.Match[str]) -> str:
     return f"{m[1]}, though," if m[1].lower() == "first" else m[1]
 
@@ -297,7 +307,7 @@ def everyday(text: str) -> str:
     text = _COUNT_LEFT.sub(_count_named, _TOPIC.sub(_topic_counted, text))
     text = _THING_FIRST.sub(lambda m: f"{m['lead']}take {m['np']}, ", text)
     text = _ORDER_THO.sub(_order_tho, text)
-    text = _DONE_AT_END.sub(_done_at_end, text)
+    text = _CAN_WAIT_TILL.sub(", but not until ", _DONE_AT_END.sub(_done_at_end, text))
     text = _TAG.sub("", text)
     text = _START_OPENER.sub("", _OPENER.sub(r"\1", text))
     text = _JUST.sub("", text)

@@ -90,8 +90,18 @@ _NOT_BEFORE_TASK = re.compile(
 _THAT = re.compile(r"^(?:then|(?:that|this|it)(?:'s|\s+is)\s+(?:done|finished|complete))$", re.I)
 
 
+# an order said after its task (paper_h301): "Y once you're done with those two" closing its sentence is "Y
+# once both are done" (the two tasks said before Y)
+_THOSE_TWO_AFTER = re.compile(
+    r"\b(?P<lead>once|when|after)\s+(?:you(?:'ve|\s+have|'re|\s+are)?\s+(?:done|finished)\s+(?:with\s+)?"
+    r"(?:those|these|the)\s+two|(?:those|these|the)\s+two\s+(?:are|have\s+been)\s+(?:done|finished))(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
 def not_before_as_after(text: str) -> str:
     """ "Do not put X in A before Y" -> "After Y, put X in A"; "Until Y, don't put X in A" -> the same."""
+    text = _THOSE_TWO_AFTER.sub(r"\g<lead> both are done", text)
     text = UNTIL_FIRST.sub(lambda m: f"After {_THAT.sub('that', m['ref'])}, {m['task']}", text)
     return _NOT_BEFORE_TASK.sub(lambda m: f"{'After' if m[1] == 'D' else 'after'} {m[3]}, {m[2]}", text)
 

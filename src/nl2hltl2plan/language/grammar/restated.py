@@ -93,6 +93,16 @@ _PASSIVE_GOAL = re.compile(
     rf"(?={_PLACE}\s)",
     re.I,
 )
+# a decree's passive that takes a thing and lays it down ("two cell phones shall be taken from the shelves and
+# laid upon the desk", paper_h301): "take two cell phones from the shelves and put them on the desk"
+_TAKEN_AND_LAID = re.compile(
+    r"(?P<lead>^|(?<=[.;!?:,])\s*|\s+and\s+)(?P<np>(?:the|a|an|one|two|three|both)\s+[a-z]+(?:\s+[a-z]+){0,2}?)\s+"
+    r"(?:shall|must|will|should|is\s+to|are\s+to|(?:needs?|has|have)\s+to)\s+be\s+"
+    r"(?:taken|removed|lifted|brought|moved|carried|fetched)\s+"
+    r"(?P<src>(?:from|off|out\s+of)\s+(?:the|a|an|its|their)\s+[a-z]+(?:\s+[a-z]+){0,2}?)\s+and\s+(?:be\s+)?"
+    r"(?:laid|placed|put|set|left|stored|dropped)\s+(?P<prep>upon|atop|on|onto|in|into|inside)\s+(?=(?:the|a|an)\s)",
+    re.I,
+)
 # "the spray bottle on the counter is to be thrown away" (h223): the thing, up to its landmark, thrown away
 _THROWN = re.compile(
     r"(?P<lead>(?:^|(?<=[.;!?:])\s*|,\s*(?:and\s+)?|\s+and\s+))(?P<np>(?:the|a|an|two|both)\s+[^,.;!?]+?)\s+"
@@ -172,7 +182,7 @@ def restated(text: str) -> str:
     text = _RECORD.sub(_record_put, text)
     text = _WANT_TO_SEE.sub(r"\1", text)
     text = _MAKE_SURE.sub(lambda m: _IS_ON.sub(lambda i: _goes(m["rest"], i), m["rest"]), text)
-    text = _PASSIVE_GOAL.sub(lambda m: _goes(text, m), text)
+    text = _PASSIVE_GOAL.sub(lambda m: _goes(text, m), _TAKEN_AND_LAID.sub(_taken_and_laid, text))
     text = _THROWN.sub(_thrown, text)
     text = _CLAUSE_GOES.sub(_you_put, text)
     text = _INVERTED_AFTER.sub(_after_then_put, text)
@@ -180,6 +190,16 @@ def restated(text: str) -> str:
     if opener and text[opener.end() :].lstrip().startswith(","):
         text = text[opener.end() :].lstrip(" ,")
     return text
+
+
+def _taken_and_laid(m: re.Match[str]) -> str:
+    """ "X shall be taken from A and laid upon B" -> "take X from A and put it (them) on B" (see above)."""
+    counted = re.match(r"(?:one|two|three|both)\s+", m["np"], re.I)
+    if not _is_named(m["np"][counted.end() :] if counted else m["np"]):
+        return m[0]
+    them = "them" if counted and counted[0].strip().lower() != "one" else "it"
+    prep = "on" if m["prep"].lower() in ("upon", "atop") else m["prep"]
+    return f"{m['lead']}take {m['np']} {m['src']} and put {them} {prep} "
 
 
 def _is_named(phrase: str, whole: bool = False) -> bool:

@@ -168,11 +168,14 @@ def _held_at_end(sentence: str) -> str | None:
 # `sentences.supply_put` wrote "the keys go in the box, and the box goes on the sofa" as a placing (h212).
 # Any shape of it (h252): the container with words before its name ("the grey bowl"), said after "on" ("on
 # a plate"), joined by a comma, ";" or "then", and the container said again by "that", "this" or "your",
-# with or without its own verb ("the bowl goes in the sink", "the pan put in the fridge"); `container_again`
+# with or without its own verb ("the bowl goes in the sink", "the pan put in the fridge", a protocol's "in a
+# cardboard box; place the box on the table", paper_h301; not after "then", whose order the rewrite would
+# drop: probes_h288held's "put a fork in a glass, then put the cup in the sink"); `container_again`
 # checks that both name one movable type
 _CONTAINER_AGAIN = re.compile(
     r"(?P<head>\b(?:in|into|inside|on|onto)\s+(?:a|an|the|one|your|my)\s+(?:[a-z]+\s+){0,2}?(?P<c>[a-z]+))"
-    r"\s*(?:,|;)?\s+(?:and\s+)?(?:then\s+)?(?:the|that|this|your)\s+(?P<c2>[a-z]+)\s+"
+    r"\s*(?:,|;)?\s+(?:and\s+)?(?:then\s+|(?:put|place|set|move|transfer|carry|take|bring)\s+)?"
+    r"(?:the|that|this|your)\s+(?P<c2>[a-z]+)\s+"
     r"(?:(?:goes|go|(?:should|must|can)\s+go|(?:is|are)\s+to\s+go)\s+"
     r"|(?:(?:should|must)\s+be\s+|is\s+to\s+be\s+)?(?:put|placed|set|left|stored)\s+)?(?=(?:in|into|on|onto|inside)\s)",
     re.I,

@@ -72,7 +72,7 @@ def _patterns() -> tuple[re.Pattern[str], ...]:
         rf"(?:(?:a|an)\s+(?:(?:good|quick|proper|little|bit\s+of\s+a)\s+)?(?P<noun>{verbs})"
         rf"|to\s+(?:be|get)\s+(?P<part>{past})|(?P<ger>{verbs}))|{_DUTY}\s+(?P<duty>{past})){PARTICLE}"
         rf"(?:\s+and\s+(?:then\s+)?(?P<then>{_PLACED}|{_GOES_VERB})(?:\s+(?P<adv>away|back|down))?"
-        r"(?=\s+(?:in|into|on|onto|inside)\s)"
+        r"(?=\s+(?:in|into|on|onto|inside|upon|atop)\s)"
         rf"|{_GOES})?(?![\w'])",
         re.I,
     )
@@ -112,8 +112,9 @@ _DUTY = (
     r"(?:(?:has|have|is|are|ought)\s+to\s+(?:be|get)|(?:should|must|will|shall|can|could)\s+(?:be|get)|to\s+be"
     r"|gets)"
 )
-_PLACED = (
-    r"(?:put|putting|placed|placing|set|setting|left|leaving|dropped|dropping|stored|storing|kept|keeping)"
+_PLACED = (  # (a decree's "shall be washed and laid on the toilet", paper_h301)
+    r"(?:put|putting|placed|placing|set|setting|left|leaving|dropped|dropping|stored|storing|kept|keeping|laid|"
+    r"laying)"
 )
 # the placing said as where the thing goes ("... and (then) goes / ends up / belongs on the counter", h260)
 _GOES_VERB = r"(?:go|goes|belongs?|ends?\s+up|be\s+(?:put|placed|left|set|stored|kept))"
@@ -125,6 +126,21 @@ _INVERTED = (
 # (and a request passed on: "tell / ask the robot to put ...", h299; a robot singled out, "the second
 # robot", is no match: `vague_words` refuses it)
 _WHO = r"(?:(?:the|a|one|my|your|our)\s+robots?|one\s+of\s+(?:the\s+)?robots|someone|somebody)"
+# a contract's "The Contractor shall wash X and shall thereafter place it on Y" (paper_h301): the imperative,
+# "wash X and then place it on Y"; the modal said again after "and" only where a doer was so named
+_DECREED = re.compile(rf"\b{courtesy_pattern('decreed')}\s+(?P<verb>[a-z]+)\b", re.I)
+_DECREED_AGAIN = re.compile(
+    r"(?P<join>\band|,)\s+(?:shall|must|will)\s+(?:(?P<then>thereafter|then|afterwards|subsequently|next)\s+)?"
+    r"(?P<verb>[a-z]+)\b",
+    re.I,
+)
+# (and its "place the said spoon upon ...": the thing just named, "it", where its noun was said before in the
+# sentence; left, "wash the spoon ... and place the said spoon" was read as two tasks of one spoon)
+_THE_SAID = re.compile(
+    r"\b(?P<verb>[a-z]+)\s+the\s+(?:said|aforesaid|aforementioned)\s+(?:[a-z]+\s+)??(?P<noun>[a-z]+)\b",
+    re.I,
+)
+_PLACING = frozenset("place put set move bring return store take carry transfer lay".split())
 _AGENT = re.compile(
     rf"{_LEAD}(?:(?:have|get|let)\s+{_WHO}\s+(?:to\s+)?|(?:tell|ask)\s+{_WHO}\s+to\s+)(?P<verb>[a-z]+)\b",
     re.I,
@@ -238,6 +254,7 @@ def treatments_said(text: str) -> str:
     text = _PUT_BARE.sub(r"\g<lead>\g<verb> it ", text)
     text = _PRONOUN_GOAL.sub(_put_pronoun, text)
     text = _AGENT.sub(lambda m: f"{m['lead']}{m['verb']}" if m["verb"].lower() in VERBS else m[0], text)
+    text = _decreed(text)
     text = pair.sub(_both_treated, text)
     text = inverted.sub(_uninverted, text)
     text = need.sub(_imperative, text)
@@ -246,6 +263,27 @@ def treatments_said(text: str) -> str:
     text = _COURTESY_AFTER_FIRST.sub("first", text)
     text = _BARE_FIRST.sub(lambda m: _named_first(text, m), text)
     return _FIRST_THEN.sub(lambda m: _first_then(text, m), text)
+
+
+def _decreed(text: str) -> str:
+    """ "The Contractor shall wash X and shall thereafter place it" -> "wash X and then place it"."""
+    said = _DECREED.sub(lambda m: m["verb"] if m["verb"].lower() in VERBS else m[0], text)
+    if said == text:
+        return text
+
+    def again(m: re.Match[str]) -> str:
+        then = "then " if m["then"] else ""
+        return f"{m['join']} {then}{m['verb']}" if m["verb"].lower() in VERBS else m[0]
+
+    return _THE_SAID.sub(_said_thing, _DECREED_AGAIN.sub(again, said))
+
+
+def _said_thing(m: re.Match[str]) -> str:
+    """ "place the said spoon upon ..." -> "place it upon ..." where a placing verb takes it and "spoon" was
+    said earlier in the sentence."""
+    before = re.split(r"[.;!?]", m.string[: m.start()])[-1]
+    named = re.search(rf"\b{re.escape(m['noun'])}\b", before, re.I)
+    return f"{m['verb']} it" if named and m["verb"].lower() in _PLACING else m[0]
 
 
 def _made(m: re.Match[str]) -> str:
