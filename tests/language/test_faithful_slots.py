@@ -180,10 +180,11 @@ def test_a_request_to_perform_something_unnamed_is_refused():
 
 
 def test_in_any_order_over_what_reads_as_one_task_is_not_one_task():
-    """The grammar alone refuses it; the whole reader gives two tasks or refuses, never one task."""
+    """The grammar alone refuses it or reads two tasks in a free order (h309: a thing washed again once it is
+    done is a second task); the whole reader gives two tasks or refuses, never one task."""
     text = "Rinse a cloth and put it in the drawer and rinse the cloth and put it in the drawer in any order."
     g = grammar_parse(text, KITCHEN, "kitchen")
-    assert any("in any order" in u for u in g.unparsed)
+    assert any("in any order" in u for u in g.unparsed) or (len(g.tasks) == 2 and not g.before)
     tasks, order, unread = read(text)
     assert unread or (summaries(tasks) == ["clean_place Cloth -> Drawer"] * 2 and not order)
 
