@@ -257,6 +257,8 @@ _COUNT_OF = re.compile(
     r"(?=([a-z]+)\b(?!\s+(?:at|in|by|after)\b))"
 )
 _THINGS_FIRST = re.compile(r"\bthings\s+first\b")
+# (a "then" that ends it, after other words, follows on from the talk: "Cheers, then.", "Right then."; h312)
+_THEN_CLOSING = re.compile(r"(?<=[a-z])\s+then\s*$")
 # (and the job said of them, where the sentence ends: "Three slates to lay.", "Two poles to put up today.")
 _COUNTED_JOB = re.compile(
     r"\b(?:one|two|three|four|five)\s+(?:more\s+)?([a-z]+)\s+to\s+[a-z]+(?:\s+(?:up|down|in|on))?"
@@ -268,7 +270,7 @@ def _voice_words(text: str) -> str:
     """A voice's sentence without what names nothing there: "a" before a word (an article, no region: "we
     have a visual", "what a gallop"), a verb on the listener's own things, a quantifier or count of a noun
     that names nothing (the noun itself stays, to be judged as frame)."""
-    text = _ON_YOURS.sub(" ", _ARTICLE_A.sub(" ", text))
+    text = _ON_YOURS.sub(" ", _ARTICLE_A.sub(" ", _THEN_CLOSING.sub(" ", text)))
     text = _COUNTED_JOB.sub(lambda m: f" {m[1]} " if _uncounted(m) == " " else m[0], text)
     text = _COUNT_OF.sub(_uncounted, _ALL_OF.sub(_unnamed, text))
     return _THINGS_FIRST.sub(lambda m: m[0] if names_content("things", True) else " things ", text)
@@ -528,13 +530,7 @@ def _voice_edges(sentences: list[str]) -> set[int]:
     "Glove on, hood off.", "Good dog."): the runs at either end of sentences that `empty` finds empty with
     any noun English knows, but a thing's name alone ("Zebra.": `named_alone`); never every sentence (a
     message of frame alone is refused, by its words)."""
-    said = [
-        empty(s, whole=True, header=k == 0, voice=True)
-        and not named_alone(tuple(re.findall(r"[a-z]+", s.lower())))
-        and not voice_remarks.commanded(s)
-        or _remark(s)
-        for k, s in enumerate(sentences)
-    ]
+    said = [_edge_empty(s, header=k == 0) or _remark(s) for k, s in enumerate(sentences)]
     if all(said):
         return set()
     first = said.index(False)
@@ -542,11 +538,25 @@ def _voice_edges(sentences: list[str]) -> set[int]:
     return set(range(first)) | set(range(last, len(said)))
 
 
+def _edge_empty(sentence: str, header: bool = False) -> bool:
+    return (
+        empty(sentence, whole=True, header=header, voice=True)
+        and not named_alone(tuple(re.findall(r"[a-z]+", sentence.lower())))
+        and not voice_remarks.commanded(sentence)
+    )
+
+
 def _remark(sentence: str) -> bool:
-    """A voice's warning of nothing the scene has ("Mind the dog.") or its farewell ("Ta-ra.", h296)."""
-    warned = (voice_remarks.caution_of(sentence) or "").lower()
-    named = MEANING.search(warned) or _ACTION.search(warned)
-    return bool(warned and not named) or voice_remarks.farewell(sentence) or voice_remarks.attention(sentence)
+    """A voice's warning of nothing the scene has ("Mind the dog."), its farewell ("Ta-ra.", h296), its
+    reassurance, plea for patience or apology about nothing the scene has ("Nothing to worry about.", h312),
+    or parts each such a remark or empty, one a remark ("Mind the glue, it's still tacky.")."""
+    warned = voice_remarks.caution_of(sentence)
+    said = warned if warned is not None else voice_remarks.aside_of(sentence)
+    unnamed = said is not None and not (MEANING.search(said.lower()) or _ACTION.search(said.lower()))
+    if unnamed or voice_remarks.farewell(sentence) or voice_remarks.attention(sentence):
+        return True
+    parts = voice_remarks.clauses(sentence)
+    return len(parts) > 1 and any(map(_remark, parts)) and all(_remark(p) or _edge_empty(p) for p in parts)
 
 
 def plain(sentences: list[str], dropped: list[str] | None = None) -> list[str]:

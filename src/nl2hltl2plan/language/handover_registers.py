@@ -228,10 +228,19 @@ _RULES: tuple[tuple[str, str | Callable[[re.Match[str]], str]], ...] = (
     ),
     # a manner said as a result: "..., in such a way that each region holds one block" (..., each region ...)
     (r",?\s*\bin\s+such\s+a\s+way\s+that\b", " ,"),
-    # "at any point / time during the task": at any time
+    # a region said again as the spot a block holds: "region g, the spot the red block occupies now" (h312:
+    # where the red block is now)
     (
-        r"\b(at\s+any\s+(?:point|time|moment))\s+(?:during|in|throughout)\s+(?:the|this)\s+"
-        r"(?:task|job|process|work)\b",
+        r",\s*the\s+(?:spot|place|region|square)\s+(?:that\s+)?(the\s+(?:red|blue|yellow)\s+block)\s+"
+        r"(?:occupies|holds|sits\s+on|is\s+on|is\s+in)\b",
+        r", where \1 is",
+    ),
+    # "every one of the three blocks" (h312): all three blocks
+    (r"\bevery\s+one\s+of\s+the\s+(two|three)\s+(?=(?:blocks|pillars|objects)\b)", r"all \1 "),
+    # "at any point / time during the task", "... along the way" (h312): at any time
+    (
+        r"\b(at\s+any\s+(?:point|time|moment))\s+(?:(?:during|in|throughout)\s+(?:the|this)\s+"
+        r"(?:task|job|process|work)|along\s+the\s+way)\b",
         r"\1",
     ),
     # an order said first: "ahead of / before the blue block, the red block must be placed" (red before blue)

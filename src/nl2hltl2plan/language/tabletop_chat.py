@@ -74,6 +74,11 @@ _RESTATED = re.compile(
     re.IGNORECASE,
 )
 
+# "..., either one first.": the stage's free order, said as "in either order" (`first_pick`)
+_FIRST_PICK = re.compile(
+    rf",\s*{phrase_list_pattern('tabletop_chat.txt', 'first_pick')}(?=\s*[.;!?])", re.IGNORECASE
+)
+
 
 def _restated(m: re.Match[str], names: frozenset[str]) -> str:
     """ "do" for a verb that names no action of the system (no word of `content_words.txt`) nor a word of
@@ -144,7 +149,7 @@ def chat_read(text: str, kinds: dict[str, bool], dropped: list[str] | None = Non
     said: list[str] = [] if dropped is None else dropped
     text = deadlines_dropped(text, names, said, said)
     text = frames_dropped(_document_label_dropped(text), names, dropped)
-    text = _FIND.sub(lambda m: f"{m['order']} you like", text)
+    text = _FIRST_PICK.sub(", in either order", _FIND.sub(lambda m: f"{m['order']} you like", text))
     text = _RESTATED.sub(lambda m: _restated(m, names), text)
     text = _YOURS.sub(lambda m: f"{m['head']} they're {m['all'] or 'all'} there", text)  # "in there": there
     text = _ON_IT.sub(r"\g<head>there", text)

@@ -36,6 +36,33 @@ def caution_of(sentence: str) -> str | None:
     return said[1] if said and said[1] else None
 
 
+def aside_of(sentence: str) -> str | None:
+    """What a voice's reassurance, plea for patience or apology opening the sentence is about ("Don't mind
+    the draught" -> "the draught"; "" where it is the whole sentence), or None where it opens with none
+    (h312).
+
+    >>> aside_of("Nothing to worry about."), aside_of("Sorry about the racket!"), aside_of("Move it")
+    ('', 'the racket', None)
+    """
+    said = re.match(rf"(?i)^\W*(?:{_pattern('aside')})(?!\w)[\s,]*(.*?)[\s.!?]*$", _spoken(sentence))
+    return said[1] if said else None
+
+
+# a clause's subject that takes up what the clause before named ("Mind the glue, it's still tacky")
+_REFERS_BACK = re.compile(r"(?i)^\s*(?:it|they)(?=\s*(?:'s|'re|\s+(?:is|are|gets?)\b))")
+
+
+def clauses(sentence: str) -> list[str]:
+    """The sentence's parts set off by commas or semicolons, an "it" or "they" opening a later part taken
+    as the thing the part before named, so dropped ("Mind the glue, it's still tacky": "'s still tacky").
+
+    >>> clauses("Mind the glue, it's still tacky.")
+    ['Mind the glue', "'s still tacky."]
+    """
+    parts = [p for p in re.split(r"[,;]", _spoken(sentence)) if p.strip()]
+    return parts[:1] + [_REFERS_BACK.sub("", p) for p in parts[1:]]
+
+
 def closing_tags(sentence: str) -> tuple[str, list[str]]:
     """The sentence without the tag questions, endearments and pet names a voice tags onto its end after a
     comma, and the tags (a sentence of a tag alone stays whole).
@@ -98,7 +125,8 @@ def commanded(sentence: str) -> bool:
     for clause in re.split(r"[,;:!?.]", sentence.lower()):
         ws = re.findall(r"[a-z]+", _POLITE.sub("", clause))
         # (a clause opened by a participle is no command: "reading glasses on", h308)
-        if len(ws) < 2 or ws[0] == "like" or ws[1] in _NO_OBJECT | _COPULA or caution_of(clause):
+        # ("be quick", "let's be neat about this": a copula's command, no object; h312)
+        if len(ws) < 2 or ws[0] in ("like", "be") or ws[1] in _NO_OBJECT | _COPULA or caution_of(clause):
             continue
         if _participle(ws[0]) or attention(clause):
             continue

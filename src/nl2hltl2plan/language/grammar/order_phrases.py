@@ -138,6 +138,9 @@ _FOCUS_CONNECTIVE = re.compile(
     re.I,
 )
 
+# "Once both are in, and not before, B" (h312): the aside says again the wait it follows
+_NOT_BEFORE = re.compile(r"(?<=\w)\s*,\s*and\s+not\s+(?:before|sooner|earlier)\s*(?=,)", re.I)
+
 
 # "A. Only after that, B" / "Only then, B" / "Only once the mug is in, B": a sentence opened by the focus word
 # (it was read as a word of its own, "Only, then B": partial)
@@ -297,8 +300,9 @@ def after_the_step(text: str) -> str:
     """ "..., do these (first,) in either order, then C" -> "... Once all that is done, C" (C after every task
     before it; "..., and after those two C" is `everyday`'s reference to every task before); "A, after which
     B" -> "A, then B"; "and at the very end C" -> "and finally C"; "and only after that B" -> "and after that
-    B"; "After that, though, B" -> "After that, B"; "A, then B, and the C on D last" -> "..., and finally
-    the C on D"; "before doing anything else" / "before you start," -> "before anything else";
+    B"; "Once both are in, and not before, B" -> "Once both are in, B"; "After that, though, B" -> "After
+    that, B"; "A, then B, and the C on D last" -> "..., and finally the C on D"; "before doing anything
+    else" / "before you start," -> "before anything else";
     "before you start on any of this" -> "before any of this"; "..., D at the very end." / "D to finish." ->
     "..., D last."; "when you have done both" -> "when both are done"; "..., and at any point B." -> "..., and
     B at any point."."""
@@ -307,7 +311,8 @@ def after_the_step(text: str) -> str:
     text = _IT_IS_THERE.sub(r"\g<lead> that is done", _THOSE_CAN_BE_FREE.sub(", ", text))
     text = _THE_NTH_THING.sub(_nth_step, text)
     text = _YOU_DID_BOTH.sub(lambda m: f"{m['lead']} {m['what']} are done", text)
-    text = _INTERJECTED.sub(r"\g<lead>, ", _FOCUS_CONNECTIVE.sub(r"\g<join>", _FOCUS_OPENER.sub("", text)))
+    text = _FOCUS_OPENER.sub("", _NOT_BEFORE.sub("", text))
+    text = _INTERJECTED.sub(r"\g<lead>, ", _FOCUS_CONNECTIVE.sub(r"\g<join>", text))
     text = _BEFORE_YOU_START_ANY.sub(r"\1 ", _BEFORE_DOING_ANYTHING.sub(r"\1 ", text))
     text = _BEFORE_YOU_START.sub(r"\1 anything else", text)
     text = _LAST_ITEM.sub(r"\g<join>finally \g<item>", text)
