@@ -170,8 +170,8 @@ def build() -> None:
 
 
 def check_counts(row: dict) -> None:
-    """A count above two ("all the watches" as `x4`) is every instance the line's world holds of the type: any
-    other is a one-line error naming the line (a pair, `x2`, is ALFRED's own and may be fewer than there are)."""
+    """A count above two ("all the watches" as `x4`) is every instance the line's world holds of the type:
+    any other is a one-line error naming the line (a pair, `x2`, is ALFRED's own, maybe fewer than held)."""
     from nl2hltl2plan.worlds.floor_plans import instance_counts
 
     for task in row["tasks"]:
@@ -180,7 +180,8 @@ def check_counts(row: dict) -> None:
         have = instance_counts(row["scene"], row.get("source_trials") or None)
         if task["count"] != max(have.get(o, 0) for o in task["object"]):
             held = {o: have.get(o, 0) for o in task["object"]}
-            raise ValueError(f"{row['id']}: x{task['count']} is not every instance of {held} in {row['scene']}")
+            where = f"{row['id']}: x{task['count']}"
+            raise ValueError(f"{where} is not every instance of {held} in {row['scene']}")
 
 
 def world_of(scene: str, trials: list[str] | tuple[str, ...] = ()) -> World:

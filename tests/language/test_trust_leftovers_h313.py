@@ -1,8 +1,9 @@
 """Issue 23 (h313): trust_h303's leftovers after the session-35 merges, as classes, through `translate`.
-A cyclic order said with ", but" after a state reference is named as the cycle (the reference used to run on
-into the next command and be refused as an unclear referent); "Repeat." as a sentence of its own is named as a
-repetition, never dropped; the pieces of a cut into two taken together ("put both in the fridge") are two
-slices, while a cut into three keeps its "both" named; a set line's `xN` count is every instance of the world."""
+A cyclic order said with ", but" after a state reference is named as the cycle (the reference used to run
+on into the next command and be refused as an unclear referent); "Repeat." as a sentence of its own is
+named as a repetition, never dropped; the pieces of a cut into two taken together ("put both in the
+fridge") are two slices, while a cut into three keeps its "both" named; a set line's `xN` count is every
+instance of its world."""
 
 from __future__ import annotations
 
@@ -15,7 +16,10 @@ from household_readings import full_reading
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
 
 
-def read(text: str, plan: str = "FloorPlan28") -> tuple[list[str], list[tuple[str, str]], list[str], list[str]]:
+Reading = tuple[list[str], list[tuple[str, str]], list[str], list[str]]
+
+
+def read(text: str, plan: str = "FloorPlan28") -> Reading:
     from trust_sets import world_of
 
     return full_reading(text, world_of(plan))
@@ -36,10 +40,10 @@ def refusal(text: str, plan: str = "FloorPlan28") -> str:
 @pytest.mark.parametrize(
     "text",
     [
-        "put the apple in the fridge after the bread is on the table, but put the bread on the table after the "
-        "apple is in the fridge",
-        "put the apple in the fridge once the bread is on the table, but put the bread on the table only after "
+        "put the apple in the fridge after the bread is on the table, but put the bread on the table after "
         "the apple is in the fridge",
+        "put the apple in the fridge once the bread is on the table, but put the bread on the table only "
+        "after the apple is in the fridge",
     ],
 )
 def test_a_cycle_said_with_but_is_named_as_the_cycle(text: str) -> None:
@@ -57,7 +61,8 @@ def test_a_command_after_but_that_names_no_thing_stays_the_clause_s_own() -> Non
 
 @pytest.mark.data
 def test_a_new_command_after_but_keeps_the_reference_s_order() -> None:
-    tasks, order, unread, _ = read("put the apple in the fridge after the bread is on the counter, but put the egg in the sink")
+    text = "put the apple in the fridge after the bread is on the counter, but put the egg in the sink"
+    tasks, order, unread, _ = read(text)
     assert sorted(tasks) == ["place Apple -> Fridge", "place Bread -> CounterTop", "place Egg -> SinkBasin"]
     assert len(order) == 1 and not unread, (order, unread)
 
@@ -77,7 +82,10 @@ def test_repeat_with_another_thing_is_still_a_task_for_it() -> None:
 @pytest.mark.data
 @pytest.mark.parametrize(
     "text",
-    ["cut the bread into two slices and put both in the fridge", "cut the bread into two slices and put them in the fridge"],
+    [
+        "cut the bread into two slices and put both in the fridge",
+        "cut the bread into two slices and put them in the fridge",
+    ],
 )
 def test_the_two_pieces_of_a_cut_taken_together_are_two_slices(text: str) -> None:
     tasks, _, unread, _ = read(text)
@@ -94,10 +102,11 @@ def test_both_after_a_cut_into_three_is_still_named() -> None:
 def test_a_count_above_two_in_a_set_line_is_every_instance_of_its_world() -> None:
     from trust_sets import check_counts, parse_line
 
-    row = parse_line("FloorPlan301 | put all the watches in the drawer | place_two Watch Drawer x4 |", "t", 1)
+    line = "FloorPlan301 | put all the watches in the drawer | place_two Watch Drawer x{} |"
+    row = parse_line(line.format(4), "t", 1)
     check_counts(row)  # FloorPlan301's default world holds 4 watches
     assert row["tasks"][0]["count"] == 4
     with pytest.raises(ValueError, match="x3 is not every instance"):
-        check_counts(parse_line("FloorPlan301 | put all the watches in the drawer | place_two Watch Drawer x3 |", "t", 1))
+        check_counts(parse_line(line.format(3), "t", 1))
     tasks, _, unread, _ = read("put all the watches in the drawer", "FloorPlan301")
     assert tasks == ["place_two 4x Watch -> Drawer"] and not unread, (tasks, unread)

@@ -417,12 +417,12 @@ def _counted(text: str, m: Mention) -> bool:
     return bool(set(before) & {"two", "three", "four", "five", "both", "all", "each", "every", "2", "3", "4"})
 
 
-# "cut the bread into two slices and put both (of them) / them (both) in the fridge": the pieces of a cut into
-# two, taken together, are two slices ("both slices", a count the task keeps, h313); a cut into three keeps its
-# "both" for check 1 to name (`counts._cut_into`)
+# "cut the bread into two slices and put both (of them) / them (both) in the fridge": the pieces of a cut
+# into two, taken together, are two slices ("both slices", a count the task keeps, h313); a cut into three
+# keeps its "both" for check 1 to name (`counts._cut_into`)
 _PIECES_OF_TWO = re.compile(
-    r"\b(?:slice|cut|chop)\s+[^.;!?]*?\binto\s+(?:two|2)\s+(?P<p>slices|pieces)\b"
-    r"(?P<mid>[^.;!?]*?\b(?:put|place|set|move|bring|take|stick|drop|leave)\s+)"
+    r"(?P<head>\b(?:slice|cut|chop)\s+[^.;!?]*?\binto\s+(?:two|2)\s+(?P<p>slices|pieces)\b"
+    r"[^.;!?]*?\b(?:put|place|set|move|bring|take|stick|drop|leave)\s+)"
     r"(?:both\s+of\s+them|them\s+both|both|them|the\s+two)"
     r"(?=\s+(?:in|on|into|onto|inside|to|at|under|next|near|beside|by|back)\b)",
     re.I,
@@ -431,4 +431,4 @@ _PIECES_OF_TWO = re.compile(
 
 def _pieces_of_two(text: str) -> str:
     """ "cut X into two slices and put both in Y" -> "... put both slices in Y"."""
-    return _PIECES_OF_TWO.sub(lambda m: f"{m[0][: m.start('mid') - m.start() + len(m['mid'])]}both {m['p']}", text)
+    return _PIECES_OF_TWO.sub(lambda m: f"{m['head']}both {m['p']}", text)

@@ -62,8 +62,8 @@ def command_after_state(text: str) -> str:
 
 
 def _a_command(m: re.Match[str]) -> bool:
-    """Does a state reference's ", and ..." / ", but ..." open a command of its own? After "but", only one that
-    names its thing ("but put the bread ...": "but put it there carefully" says how, of the clause itself)."""
+    """Does a state reference's ", and ..." / ", but ..." open a command of its own? After "but", only one
+    that names its thing ("but put the bread ...": "but put it there carefully" says how, of its clause)."""
     return m["verb"].lower() in G.VERBS and (not m["but"] or m["thing"] is not None)
 
 
