@@ -110,3 +110,12 @@ def test_a_count_above_two_in_a_set_line_is_every_instance_of_its_world() -> Non
         check_counts(parse_line(line.format(3), "t", 1))
     tasks, _, unread, _ = read("put all the watches in the drawer", "FloorPlan301")
     assert tasks == ["place_two 4x Watch -> Drawer"] and not unread, (tasks, unread)
+
+
+@pytest.mark.data
+@pytest.mark.parametrize("text", ["put every single candle on the counter",
+    "put every last candle on the counter"])
+def test_every_single_is_every_instance(text: str) -> None:
+    # found by the held probe (read as one candle at exit 0): the stressing word counts nothing
+    tasks, _, unread, _ = read(text, "FloorPlan426")
+    assert tasks == ["place_two 3x Candle -> CounterTop"] and not unread, (tasks, unread)
