@@ -9,7 +9,8 @@ The .txt files are hand-written, one instruction a line: `scene | instruction | 
 what must be refused | constraints`. Constraints (what a negation forbids): `;`-separated, each the
 forbidden action patterns separated by blanks (`put(Cup,SinkBasin)`, `any(Tomato)` for every action the
 world allows on a tomato), optionally `until A` (the base task that lifts it).
-Base tasks: `kind Object[/Alt] Destination [x2] [sliced] [in Container]` or
+Base tasks: `kind Object[/Alt] Destination [x2|xN] [sliced] [in Container]` (`xN`, N > 2: "all the X", every
+one of the N the line's world holds, checked at `build`) or
 `set_state Object state`,
 `;`-separated, ids A, B, ... in order; before: `A<B, ...`. A line with something to refuse has
 `feasible: false` and that text in `issues` (its base tasks are the part a world can do).
@@ -28,6 +29,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import re
 import sys
 from collections import Counter
 from pathlib import Path
@@ -73,8 +75,9 @@ def parse_task(text: str, task_id: str) -> dict:
         "receptacle": dest,
         "light": None,
     }
-    if "x2" in rest:
-        task["count"] = 2
+    for word in rest:  # "x2" (place_two), or "xN" for "all the X" over N instances (issue 23: every one)
+        if re.fullmatch(r"x[2-9]", word):
+            task["count"] = int(word[1:])
     if "in" in rest:
         task["container"] = rest[rest.index("in") + 1].split("/")
     if kind == "examine_in_light":
@@ -161,8 +164,24 @@ def build() -> None:
         rows = [parse_line(ln, src.stem, n) for n, ln in enumerate(lines, 1)]
         for r in rows:
             GTInstance.model_validate(r)
+            check_counts(r)
         src.with_suffix(".jsonl").write_text("".join(json.dumps(r) + "\n" for r in rows))
         print(f"{src.with_suffix('.jsonl')}: {len(rows)} instructions")
+
+
+def check_counts(row: dict) -> None:
+    """A count above two ("all the watches" as `x4`) is every instance the line's world holds of the type:
+    any other is a one-line error naming the line (a pair, `x2`, is ALFRED's own, maybe fewer than held)."""
+    from nl2hltl2plan.worlds.floor_plans import instance_counts
+
+    for task in row["tasks"]:
+        if task["count"] <= 2:
+            continue
+        have = instance_counts(row["scene"], row.get("source_trials") or None)
+        if task["count"] != max(have.get(o, 0) for o in task["object"]):
+            held = {o: have.get(o, 0) for o in task["object"]}
+            where = f"{row['id']}: x{task['count']}"
+            raise ValueError(f"{where} is not every instance of {held} in {row['scene']}")
 
 
 def world_of(scene: str, trials: list[str] | tuple[str, ...] = ()) -> World:

@@ -46,11 +46,18 @@ def _next_mention(mentions: list[Mention], words: list[str], i: int, within: int
             between = words[i + 1 : m.start]
             # a state word may stand between ("three cold eggs": read before as 3 eggs of 2, at exit 0, h205)
             counted = all(w in DETERMINERS or w in STATE_WORDS or not categories(w) for w in between)
+            counted = counted or _every_single(words, i, between)
             return m if counted and not set(between) & _PLACE_PREPS else None
     return None
 
 
 _PLACE_PREPS = (LOCATIVE - {"of"}) | {"to", "into", "onto"}
+
+
+def _every_single(words: list[str], i: int, between: list[str]) -> bool:
+    """ "every single candle", "every last candle": the word after "every" stresses it, and counts nothing
+    (read as one candle, at exit 0, h313's held probe)."""
+    return words[i] in ("every", "each") and between in (["single"], ["last"])
 
 
 # "all but": the one owner of a whole said with what it leaves out. After a counted noun, "all (of) the mugs
@@ -138,6 +145,8 @@ def count_unread(
     """A count before a noun: the task on that noun takes exactly so many (every one for "all")."""
     w, start, _ = toks[i]
     words = [t[0] for t in toks]
+    if i > 0 and _every_single(words, i - 1, words[i : i + 1]):
+        return None  # "every single candle": "every" counts them
     m = _next_mention(mentions, words, i)
     if m is None and (cut := _cut_into(words, i, cats, parse)):
         return cut

@@ -104,7 +104,7 @@ def counted_references(text: str) -> str:
     """`text` with the counted and ordinal references above written out (a pure function of the text)."""
     text = _ONE_OF_N.sub(_count_of_those, text)
     rules = (_counts_after, _lamp_used, _counted_others, _counted_more, _other_unit)
-    for rule in (*rules, _rest, _other_one, _another, _treated_one, _slice_of_before):
+    for rule in (*rules, _rest, _other_one, _another, _treated_one, _slice_of_before, _pieces_of_two):
         text = rule(text)
     return text
 
@@ -415,3 +415,20 @@ def _counted(text: str, m: Mention) -> bool:
     """Is a count or quantifier said right before the mention ("two remotes", "all the remotes")?"""
     before = [w for w, _, _ in tokens(text[: m.char_start])][-3:]
     return bool(set(before) & {"two", "three", "four", "five", "both", "all", "each", "every", "2", "3", "4"})
+
+
+# "cut the bread into two slices and put both (of them) / them (both) in the fridge": the pieces of a cut
+# into two, taken together, are two slices ("both slices", a count the task keeps, h313); a cut into three
+# keeps its "both" for check 1 to name (`counts._cut_into`)
+_PIECES_OF_TWO = re.compile(
+    r"(?P<head>\b(?:slice|cut|chop)\s+[^.;!?]*?\binto\s+(?:two|2)\s+(?P<p>slices|pieces)\b"
+    r"[^.;!?]*?\b(?:put|place|set|move|bring|take|stick|drop|leave)\s+)"
+    r"(?:both\s+of\s+them|them\s+both|both|them|the\s+two)"
+    r"(?=\s+(?:in|on|into|onto|inside|to|at|under|next|near|beside|by|back)\b)",
+    re.I,
+)
+
+
+def _pieces_of_two(text: str) -> str:
+    """ "cut X into two slices and put both in Y" -> "... put both slices in Y"."""
+    return _PIECES_OF_TWO.sub(lambda m: f"{m['head']}both {m['p']}", text)

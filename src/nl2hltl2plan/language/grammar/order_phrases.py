@@ -32,12 +32,13 @@ def not_one_reference(ref: str) -> bool:
     return re.search(r"\bthen\b", ref, re.I) is not None or _SECOND_CLAUSE.search(ref) is not None
 
 
-# "A after the egg is in the sink, and put the bread ...": a reference to a state ends where a command of
-# its own begins; that command is a sentence of its own (its order is not A's)
+# "A after the egg is in the sink, and (or ", but") put the bread ...": a reference to a state ends where a
+# command of its own begins; that command is a sentence of its own (its order is not A's)
 _STATE_THEN_COMMAND = re.compile(
     rf"(?<=\w )(?P<ref>{REFERENCE}\s+(?:the|a|an|your|my)\s+[^,.;!?]*?\b"
-    r"(?:is|are|has\s+been|have\s+been)\b[^,.;!?]*?),?\s+and\s+(?P<adv>(?:finally|lastly|next)\s*,?\s+)?"
-    r"(?=(?:(?:please|also)\s+)?(?P<verb>[a-z]+)\b)",
+    r"(?:is|are|has\s+been|have\s+been)\b[^,.;!?]*?)(?:,?\s+and|\s*,\s*(?P<but>but))\s+"
+    r"(?P<adv>(?:finally|lastly|next)\s*,?\s+)?"
+    r"(?=(?:(?:please|also)\s+)?(?P<verb>[a-z]+)\b(?P<thing>\s+(?:the|a|an|your|my)\b)?)",
     re.I,
 )
 
@@ -56,10 +57,14 @@ def command_after_state(text: str) -> str:
     bread ..." (a state said of a thing takes no command into its reference); "..., and finally put the
     bread ..." -> "... . finally put the bread ..." (the last step, after every task before it), also after
     a reference to a task ("A before you put X in B, and finally C")."""
-    text = _STATE_THEN_COMMAND.sub(
-        lambda m: f"{m['ref']}. {m['adv'] or ''}" if m["verb"].lower() in G.VERBS else m[0], text
-    )
+    text = _STATE_THEN_COMMAND.sub(lambda m: f"{m['ref']}. {m['adv'] or ''}" if _a_command(m) else m[0], text)
     return _REF_THEN_LAST.sub(lambda m: f"{m['ref']}. {m['adv']} ", text)
+
+
+def _a_command(m: re.Match[str]) -> bool:
+    """Does a state reference's ", and ..." / ", but ..." open a command of its own? After "but", only one
+    that names its thing ("but put the bread ...": "but put it there carefully" says how, of its clause)."""
+    return m["verb"].lower() in G.VERBS and (not m["but"] or m["thing"] is not None)
 
 
 def clause_refs(rel: str, ref: str) -> list[tuple[str, str]]:
