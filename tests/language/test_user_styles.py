@@ -430,6 +430,7 @@ def test_no_committed_style_set_is_read_wrong(name):
     assert set(wrong) <= KNOWN_WRONG, wrong
 
 
+@pytest.mark.data
 def test_a_line_is_read_once_for_each_question(monkeypatch):
     """The language folder's `one_reading_per_line` (conftest): the all-sets check and the per-set tests
     share a line's reading, and a verdict still follows the truth and the plural mode it was asked with (the
