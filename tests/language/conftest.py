@@ -133,7 +133,8 @@ def one_reading_per_line() -> Iterator[None]:
     (test_user_styles.py) reads every committed style set, and the per-set tests read some of them again
     with the same question (about 600 of 5,800 lines); the reader's own memos keep only parts of a reading.
     The key is all that a verdict depends on: the row as loaded (text, floor plan, trials, truth), its
-    constraints, the backend and the plural mode. No test in this folder patches the reader before asking."""
+    constraints, the backend and the plural mode; not the environment or patched code, so a test that
+    patches the reader (or sets a reader's environment variable) must not ask `trust_sets` for a verdict."""
     read = trust_sets.read_line
     params = inspect.signature(read)
     kept: dict[tuple[str, ...], tuple[str, str, tuple[str, ...]]] = {}
