@@ -1,8 +1,11 @@
-"""Fixtures of the language tests: a local stub of an OpenAI-compatible server, data skips."""
+"""Fixtures of the language tests: a local stub of an OpenAI-compatible server, data skips, one reading
+of a set's line per test process."""
 
 from __future__ import annotations
 
+import inspect
 import json
+import sys
 import threading
 import time
 from collections.abc import Callable, Iterator
@@ -15,6 +18,9 @@ from household_readings import shared_world
 
 from nl2hltl2plan.config import data_dir
 from nl2hltl2plan.worlds.world import World
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "scripts"))
+import trust_sets  # noqa: E402
 
 DATA = Path(__file__).parent / "data"
 
@@ -119,3 +125,32 @@ def world() -> Callable[..., World]:
     """`world("FloorPlan7")`, `world(plan, trials)`: a world as `load_world` builds it, one per test process
     for every module that reads in it (each module still pins its own floor plan)."""
     return shared_world
+
+
+@pytest.fixture(scope="session", autouse=True)
+def one_reading_per_line() -> Iterator[None]:
+    """`trust_sets.outcome` answers each line once per test process. `-m sweep`'s all-sets check
+    (test_user_styles.py) reads every committed style set, and the per-set tests read some of them again
+    with the same question (about 600 of 5,800 lines); the reader's own memos keep only parts of a reading.
+    The key is all that a verdict depends on: the row as loaded (text, floor plan, trials, truth), its
+    constraints, the backend and the plural mode; not the environment or patched code, so a test that
+    patches the reader (or sets a reader's environment variable) must not ask `trust_sets` for a verdict."""
+    read = trust_sets.read_line
+    params = inspect.signature(read)
+    kept: dict[tuple[str, ...], tuple[str, str, tuple[str, ...]]] = {}
+
+    def read_once(*args: object, **kwargs: object) -> tuple[str, str, list[str]]:
+        bound = params.bind(*args, **kwargs)
+        bound.apply_defaults()
+        gt, backend, plurals = (bound.arguments[k] for k in ("gt", "backend", "plurals"))
+        constraints = json.dumps(trust_sets.constraints_of(gt), sort_keys=True)
+        key = gt.model_dump_json(), constraints, backend, plurals
+        if key not in kept:
+            what, why, assumed = read(*args, **kwargs)
+            kept[key] = what, why, tuple(assumed)
+        what, why, assumed = kept[key]
+        return what, why, list(assumed)
+
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setattr(trust_sets, "read_line", read_once)
+        yield

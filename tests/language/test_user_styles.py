@@ -203,11 +203,7 @@ def test_user_style_set_converts(name, least):
     """No line of a user-style set is read wrong; a line that must be refused is; 90 % of the rest convert."""
     import trust_sets
 
-    path = Path(__file__).parent / "data" / "styles" / f"{name}.txt"
-    lines = [ln for ln in path.read_text().splitlines() if ln.strip() and not ln.startswith("#")]
-    gts = [
-        trust_sets.GTInstance.model_validate(trust_sets.parse_line(ln, name, k)) for k, ln in enumerate(lines)
-    ]
+    gts = trust_sets.load(name)  # the rows as the all-sets check loads them: one reading of each per process
     outcomes = [trust_sets.outcome(gt)[0] for gt in gts]
     assert len(gts) >= least
     assert [gt.instruction for gt, what in zip(gts, outcomes, strict=True) if what == "wrong"] == []
@@ -419,3 +415,29 @@ def test_no_committed_style_set_is_read_wrong(name):
 
     wrong = [gt.instruction for gt in trust_sets.load(name) if trust_sets.outcome(gt)[0] == "wrong"]
     assert set(wrong) <= KNOWN_WRONG, wrong
+
+
+@pytest.mark.data
+def test_a_line_is_read_once_for_each_question(monkeypatch):
+    """The language folder's `one_reading_per_line` (conftest): the all-sets check and the per-set tests
+    share a line's reading, and a verdict still follows the truth and the plural mode it was asked with (the
+    trials: test_style_trials.py)."""
+    import trust_sets
+
+    reads: list[str] = []
+    translate = trust_sets.translate
+
+    def counted(text, *args, **kwargs):
+        reads.append(text)
+        return translate(text, *args, **kwargs)
+
+    monkeypatch.setattr(trust_sets, "translate", counted)
+    line = "FloorPlan1 | put the plates in the sink | place_two Plate SinkBasin x2 | "
+    gt, other = (
+        trust_sets.GTInstance.model_validate(trust_sets.parse_line(ln, "read_once", 1))
+        for ln in (line, line.replace("SinkBasin", "Fridge"))
+    )
+    assert [trust_sets.outcome(gt)[0] for _ in range(2)] == ["refused"] * 2  # "ask": how many plates?
+    assert [trust_sets.outcome(gt, plurals="two")[0] for _ in range(2)] == ["converted"] * 2
+    assert trust_sets.outcome(other, plurals="two")[0] == "wrong"  # its own truth, read again
+    assert reads == ["put the plates in the sink"] * 3
