@@ -110,7 +110,7 @@ def test_the_moment_a_clause_holds_is_a_reference(text):
 
 def test_at_the_moment_is_no_reference():
     """Near miss: "at the moment" (now) and "the second mug" name no time."""
-    from nl2hltl2plan.language.grammar.order_phrases import the_moment
+    from nl2hltl2plan.language.grammar.state_references import the_moment
 
     text = "At the moment the mug is dirty. Put the second mug in the sink, wait a minute."
     assert the_moment(text) == text

@@ -42,7 +42,7 @@ def until_first_at(text: str, at: int) -> bool:
 # "With the bat done, Y" / "Whenever the vase is sorted, Y" / "Once the black table is sorted, Y" / "With
 # the mug out of the way, Y": a thing's task said to be finished opens a reference, as "Once the bat is
 # done, Y" does (the words that say a step is finished: done, sorted, handled, taken care of ...;
-# `grammar.order_phrases.finished_thing` reads it)
+# `grammar.state_references.finished_thing` reads it)
 _FINISHED = (
     r"(?:done|finished|complete|completed|sorted(?:\s+out)?|handled|settled|taken\s+care\s+of|dealt\s+with|"
     r"out\s+of\s+the\s+way|squared\s+away|in\s+place)"

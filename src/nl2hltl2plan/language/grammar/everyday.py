@@ -38,12 +38,13 @@ from nl2hltl2plan.language.grammar import word_tables as G
 from nl2hltl2plan.language.grammar.counted_refs import another_said, counted_references
 from nl2hltl2plan.language.grammar.lamp_phrases import carried_to_lamp, items_under_lamp
 from nl2hltl2plan.language.grammar.one_and_other import one_and_the_other
-from nl2hltl2plan.language.grammar.order_phrases import dashed_first, state_on_it
+from nl2hltl2plan.language.grammar.order_phrases import dashed_first
 from nl2hltl2plan.language.grammar.order_remarks import remarks_said_plainly
 from nl2hltl2plan.language.grammar.places_again import places_named_again
 from nl2hltl2plan.language.grammar.repeats import order_word_first, repeated_for_another
 from nl2hltl2plan.language.grammar.restated import count_fits, restated
 from nl2hltl2plan.language.grammar.sentence_joins import container_again
+from nl2hltl2plan.language.grammar.state_references import state_on_it
 from nl2hltl2plan.language.grammar.treatments_said import treatments_said
 from nl2hltl2plan.language.grammar.use_names import named_by_use
 from nl2hltl2plan.language.grammar.word_tables import VERBS

@@ -17,14 +17,12 @@ from nl2hltl2plan.language.grammar.order_phrases import (
     closing_orders,
     command_after_state,
     done_opener_closed,
-    finished_thing,
     leading_connective,
     not_before_as_after,
     not_one_reference,
     one_last_step,
     opener_closed,
     subordinate_first,
-    the_moment,
 )
 from nl2hltl2plan.language.grammar.order_remarks import (
     FIRST_LAST_SENTENCE,
@@ -40,6 +38,7 @@ from nl2hltl2plan.language.grammar.sentence_joins import (
     holder_named,
     joined_treatments,
 )
+from nl2hltl2plan.language.grammar.state_references import finished_thing, the_moment
 from nl2hltl2plan.language.grammar.subordinate import after_ref, placed_after, treated_before, treatment_of_it
 from nl2hltl2plan.language.grammar.verbless_items import (
     names_holder_before,
