@@ -1,7 +1,7 @@
-"""h315 (issue 28): users_h300's single-task asides (h309's C4), on my own sentences (styles/probes_h315dev.txt;
-the held-out half is probes_h315held.txt). Before, each was refused: a person's reason ("so daddy can find it")
-left "find" unread, the writer's own later step ("i'll wash them later") was read as a washing with no place,
-and a return after a statement of where things belong had no place."""
+"""h315 (issue 28): users_h300's single-task asides (h309's C4), on my own sentences
+(styles/probes_h315dev.txt; the held-out half is probes_h315held.txt). Before, each was refused: a person's
+reason ("so daddy can find it") left "find" unread, the writer's own later step ("i'll wash them later") was
+read as a washing with no place, and a return after a statement of where things belong had no place."""
 
 from __future__ import annotations
 
@@ -34,7 +34,8 @@ def test_a_return_goes_where_the_things_belong():
     assert back_where_belongs("the candle goes on the counter. put it back please") == (
         "put the candle back on the counter please"
     )
-    assert back_where_belongs("put the mug in the sink, then put it back") == "put the mug in the sink, then put it back"
+    said = "put the mug in the sink, then put it back"
+    assert back_where_belongs(said) == said
 
 
 @needs_data
@@ -42,9 +43,8 @@ def test_the_asides_read_as_the_request():
     assert reading("the remote lives on the sofa, please put it back", shared_world("FloorPlan201")) == (
         ["place RemoteControl -> Sofa"], []
     )
-    assert reading("put a potato in the fridge please, i'll cook it tomorrow", shared_world("FloorPlan5")) == (
-        ["place Potato -> Fridge"], []
-    )
+    said = "put a potato in the fridge please, i'll cook it tomorrow"
+    assert reading(said, shared_world("FloorPlan5")) == (["place Potato -> Fridge"], [])
 
 
 @needs_data
