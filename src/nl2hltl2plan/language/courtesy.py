@@ -137,6 +137,15 @@ def _keeps_reason(why: str) -> bool:
     return any(categories(w) & _TREATMENTS for w in re.findall(r"[a-z]+", _KEPT.sub(" ", why).lower()))
 
 
+# the writer's own later step, after a comma to its sentence's end, naming nothing but a pronoun of what
+# was asked ("..., i'll wash them later", "..., i'll deal with it tomorrow"): `courtesy.txt`, `promise`
+_PROMISE = re.compile(
+    rf"\s*,\s*{courtesy_pattern('promise')}\s+(?:[a-z]+\s+){{1,2}}?(?:it|them|those|these|that|em|'em|both)"
+    rf"(?:\s+{courtesy_pattern('promise_when')})?(?=\s*(?:[.;!?]|$))",
+    re.I,
+)
+
+
 def without_reasons(text: str) -> str:
     """`text` without the reasons said after its requests (`courtesy.txt`, `reason`), which ask for nothing.
 
@@ -144,8 +153,10 @@ def without_reasons(text: str) -> str:
     'put the pear in the fridge, then the cup in the sink'
     >>> without_reasons("put the cup in the sink so it gets washed. put the pen away so you can use it")
     'put the cup in the sink so it gets washed. put the pen away so you can use it'
+    >>> without_reasons("two forks in the sink please, i'll wash them later")
+    'two forks in the sink please'
     """
-    return _REASON.sub(lambda m: m[0] if _keeps_reason(m["why"]) else "", text)
+    return _PROMISE.sub("", _REASON.sub(lambda m: m[0] if _keeps_reason(m["why"]) else "", text))
 
 
 def _afterthought(m: re.Match[str]) -> str:

@@ -45,6 +45,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import stems
+from nl2hltl2plan.language.grammar.restated import fixed_place
 from nl2hltl2plan.language.grammar.word_tables import STATE_WORDS, VERBS
 from nl2hltl2plan.language.grounding import find_mentions
 from nl2hltl2plan.language.household_narration import narrated
@@ -120,6 +121,8 @@ def paired(text: str) -> str:
     """Colon pairs of one thing and one place, "mug: sink; apple: fridge", as arrows; else `text`."""
     pairs = list(_PAIR.finditer(text))
     if not pairs or not all(_one_thing(m["thing"]) and _one_thing(m["place"]) for m in pairs):
+        return text
+    if any(fixed_place(m["thing"]) for m in pairs):  # "armchair: a newspaper": a place heads its things
         return text
     text = _PAIR.sub(lambda m: f"{m['lead']}{m['thing']} -> {m['place']}", text)
     return _SEPARATOR.sub(", ", text)

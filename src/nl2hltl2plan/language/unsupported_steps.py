@@ -22,7 +22,7 @@ import networkx as nx
 from nl2hltl2plan.domain.task_kinds import APPLIANCE
 from nl2hltl2plan.language.content_words import DETERMINERS, Unread, categories
 from nl2hltl2plan.language.grammar.frames import UNDER
-from nl2hltl2plan.language.grammar.put_back import WHERE_IT_WAS
+from nl2hltl2plan.language.grammar.put_back import BELONGS_THEN_BACK, WHERE_IT_WAS
 from nl2hltl2plan.language.grammar.repeats import REPEAT_FRAGMENT
 from nl2hltl2plan.language.grounding import Mention, lookup, sentence_start, tokens
 from nl2hltl2plan.language.landmarks import NEAR_WORDS
@@ -199,10 +199,17 @@ def _state_reference(lowered: str, m: Mention) -> bool:
 
 def _returned(lowered: str, start: int, end: int, mentions: list[Mention], parse: ParseUsage) -> bool:
     """Does a task put something into a place the words between `start` and `end` name as a source
-    ("from the cabinet", "out of the fridge")?"""
+    ("from the cabinet", "out of the fridge"), or that a statement right before the return says the things
+    belong in ("the remotes live on the armchair, put them back": `put_back.BELONGS_THEN_BACK`)?"""
     places = {r for t in parse.tasks for r in t.receptacle or ()}
+    belongs = [b.span("place") for b in BELONGS_THEN_BACK.finditer(lowered) if b.start() < end < b.end()]
     return any(
-        start <= m.char_start < end and set(m.entry.types) & places and a_source(lowered, m.char_start)
+        set(m.entry.types) & places
+        and (
+            start <= m.char_start < end
+            and a_source(lowered, m.char_start)
+            or any(a <= m.char_start < b for a, b in belongs)
+        )
         for m in mentions
     )
 

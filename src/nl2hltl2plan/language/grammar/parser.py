@@ -29,7 +29,7 @@ from nl2hltl2plan.language.grammar.draft_tasks import TaskBuilder, build_tasks
 from nl2hltl2plan.language.grammar.drafts import DraftBuilder
 from nl2hltl2plan.language.grammar.listed_things import name_apart_across
 from nl2hltl2plan.language.grammar.order_relations import relate
-from nl2hltl2plan.language.grammar.put_back import put_back_where_taken
+from nl2hltl2plan.language.grammar.put_back import back_where_belongs, put_back_where_taken
 from nl2hltl2plan.language.grammar.sentences import normalize, read_sentences
 from nl2hltl2plan.language.grounding import AffordanceLookup, Grounder, alfred_lookup
 from nl2hltl2plan.language.result import Ambiguity
@@ -67,7 +67,8 @@ def parse_instruction(
     `affordances` (type -> `Affordances` or None when unknown; default: ALFRED's facts when the shared data
     is there) narrows a word with several types to those that can play their role (`grounding.Roles`).
     """
-    text = put_back_where_taken(normalize(instruction))  # "put it back": where it was taken from
+    # "put it back": where the sentence said the things belong, or where they were taken from
+    text = put_back_where_taken(normalize(back_where_belongs(instruction)))
     grounder = Grounder(types, scene) if types is not None else None
     if types is not None and affordances is None:
         affordances = alfred_lookup()

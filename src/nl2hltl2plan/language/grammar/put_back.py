@@ -36,6 +36,28 @@ _PUT_BACK = re.compile(
 )
 
 
+# where things belong, said as a statement right before a return ("the remotes live on the armchair, please
+# put them back", "my keys go in the box. put them back"): the return goes to that place, said once
+BELONGS_THEN_BACK = re.compile(
+    r"\b(?P<np>(?:the|my|your|our|all\s+the|both)\s+[a-z]+(?:\s+[a-z]+){0,2}?)\s+"
+    r"(?:live|lives|belong|belongs|go|goes)\s+(?P<place>(?:on|in|into|onto)\s+(?:the|my|your|our)\s+"
+    r"[a-z]+(?:\s+[a-z]+){0,2}?)\s*[,.;]\s*(?:so\s+)?(?P<please>please\s+)?"
+    r"(?:(?:put|place|set|bring|take)\s+(?:them|it)\s+back|return\s+(?:them|it))" + WHERE_IT_WAS
+    + r"(?=\s*(?:$|[.,;!?)]|(?:and|then|please)\b))",
+    re.I,
+)
+
+
+def back_where_belongs(text: str) -> str:
+    """`text` with each return right after a statement of where its things belong said as one placing there
+    (read before the grammar's normalizing, which writes "the X goes in Y" as a placing of its own).
+
+    >>> back_where_belongs("the remotes live on the armchair, please put them back")
+    'please put the remotes back on the armchair'
+    """
+    return BELONGS_THEN_BACK.sub(lambda m: f"{m['please'] or ''}put {m['np']} back {m['place']}", text)
+
+
 def put_back_where_taken(text: str) -> str:
     """`text` with each return whose place is unsaid put back in the one place its sentence named as a
     source before it (module doc)."""

@@ -34,7 +34,7 @@ from __future__ import annotations
 import re
 
 from nl2hltl2plan.language.content_words import categories
-from nl2hltl2plan.language.grounding import RECEPTACLES, Mention, find_mentions
+from nl2hltl2plan.language.grounding import MOVABLE_RECEPTACLES, RECEPTACLES, Mention, find_mentions
 
 _PLACE = r"(?:on|onto|in|into|inside)"
 _NP = r"(?:the|a|an)\s+[a-z]+(?:\s+[a-z]+){0,2}?"  # a short noun phrase; checked against the lexicon
@@ -48,11 +48,15 @@ _COUNTED_HEADER = re.compile(
     r"(?:(?P<count>two|three|four|five|six|\d)|these|the\s+following)\s+[a-z]+(?:\s+[a-z]+){0,3}?\s*:\s*",
     re.I,
 )
+# a topic before a colon: "the yellow plate: ...", and a fixed place named bare or by its back or top
+# ("armchair: 2 newspapers and 2 cards", "back of the toilet: a sponge", users_h300, h315)
 _TOPIC_HEADER = re.compile(
-    rf"{_CLAUSE_START}(?:(?P<order>{_ORDER})\s*,?\s+)?(?P<topic>the\s+[a-z]+(?:\s+[a-z]+){{0,2}}?)\s*:\s*"
-    r"(?P<clause>[^.;!?:]+)",
+    rf"{_CLAUSE_START}(?:(?P<order>{_ORDER})\s*,?\s+)?(?P<part>(?:the\s+)?(?:back|top)\s+of\s+)?"
+    r"(?P<topic>(?:the\s+)?[a-z]+(?:\s+[a-z]+){0,2}?)\s*:\s*(?P<clause>[^.;!?:]+)",
     re.I,
 )
+# the count that may open a list of things after a topic ("armchair: 2 newspapers and 2 cards")
+_COUNT_LEAD = re.compile(r"^\s*(?:\d+|two|three|four|five|six)\s+(?=[a-z])", re.I)
 _GETS = r"(?:(?:should|must|will|has\s+to|have\s+to|needs?\s+to)\s+(?:get|receive)|gets|receives)"
 _SUBJECT_PLACE = re.compile(
     rf"(?:{_CLAUSE_START}|(?<=,)\s*(?:and\s+)?|\s+and\s+)(?P<place>(?:the\s+)?[a-z]+(?:\s+[a-z]+)?)\s+{_GETS}\s+"
@@ -259,6 +263,11 @@ def _topic_clause(m: re.Match[str]) -> str:
     topic, clause = m["topic"], m["clause"]
     if not _is_named(topic, whole=True):
         return m[0]
+    if m["part"] or not re.match(r"the\s", topic, re.I):  # only a fixed place: "mug: sink" is a record
+        if not fixed_place(topic):
+            return m[0]
+        part = re.sub(r"^(?!the\s)", "the ", m["part"].lower()) if m["part"] else ""
+        topic = part + "the " + re.sub(r"^the\s+", "", topic, flags=re.I)
     lead = m[0][: len(m[0]) - len(m[0].lstrip())]
     order = (m["order"] or "").lower()
     order = "first " if order.startswith(("start", "begin")) else (f"{order}, " if order else "")
@@ -267,10 +276,17 @@ def _topic_clause(m: re.Match[str]) -> str:
         body = clause[: pronoun.start()] + _lower_article(topic) + clause[pronoun.end() :]
     else:
         objs, rest = re.match(r"([^,]*)(.*)", clause).groups()  # type: ignore[union-attr]
-        if not _is_named(objs) or re.search(rf"\b{_PLACE}\b", objs, re.I):
+        if not _is_named(_COUNT_LEAD.sub("", objs)) or re.search(rf"\b{_PLACE}\b", objs, re.I):
             return m[0]
         body = f"put {objs.strip()} on {_lower_article(topic)}{rest}"
     return f"{lead}{order}{body}"
+
+
+def fixed_place(phrase: str) -> bool:
+    """Does the phrase name a place that stays where it is (a receptacle no one carries: "armchair")?"""
+    found = find_mentions(phrase)
+    fixed = RECEPTACLES - MOVABLE_RECEPTACLES
+    return bool(found) and all(t in fixed for t in found[0].entry.types)
 
 
 def _subject_places(text: str) -> str:
