@@ -27,6 +27,16 @@ def test_an_order_said_after_its_task_is_read() -> None:
     assert len(tasks) == 2 and before == [("B", "A")]
 
 
+def test_a_wait_till_the_task_before_is_done_is_named_when_no_reading_orders_it() -> None:
+    """ "till" is an order word of check 1 (session 35): the learned reading of "..., but they can wait till
+    you've done that" (no order) passed check 1 at exit 0 before; now the clause is named."""
+    text = (
+        "Put the remote on the sofa. Put both watches on the end table, but they can wait till you've done "
+        "that."
+    )
+    assert "wait till you've done that" in refusal(text, shared_world("FloorPlan217"))
+
+
 def test_those_two_after_three_tasks_is_refused_by_name() -> None:
     text = (
         "Put a pen on the desk, then a cd in a drawer, then a watch on the dresser. Put the mug on the shelf "

@@ -398,9 +398,9 @@ KNOWN_WRONG: set[str] = {
     "Clause 4.1. The Contractor shall wash the spoon found on the counter beside the bread and shall "
     "thereafter place the said spoon upon the microwave stand. Time is of the essence.",
     # the retrained models of session 35 (h309's lexicon names changed their training data): "X, but they can
-    # wait till you've done the lamp" (a task named by its thing; "... done that" too) drops the wait's order
-    # at exit 0, a class left open (the old models refused this line); "heat an egg and put it on the counter
-    # first" after a sentence of its own is ordered after it (users_h183held)
+    # wait till you've done the lamp" drops the wait's order at exit 0 (the old models refused this line;
+    # "... done that" is named since "till" is an order word of check 1, the lamp's task is not); "heat an egg
+    # and put it on the counter first" after a sentence of its own is ordered after it (users_h183held)
     "Pick up the remote on the dresser and turn the floor lamp on while you hold it. Both watches on the "
     "coffee table go to the round black end table, but they can wait till you've done the lamp.",
     "clean the bowl and put it in the microwave. heat an egg and put it on the counter first",
