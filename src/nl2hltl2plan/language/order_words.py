@@ -144,8 +144,19 @@ def frees_an_order(
     # the word "any" of "each pair in any order" frees only within the groups, as its phrase does
     in_remark = {i for i, at in enumerate(_starts(plain)) if any(r.start <= at < r.end for r in remarks)}
     return any(not r.per_group for r in remarks) or any(
-        "any_order" in categories(w) for i, w in enumerate(plain) if i not in in_mention | in_remark
+        "any_order" in categories(w)
+        for i, w in enumerate(plain)
+        if i not in in_mention | in_remark and not _while_held(plain, i)
     )
+
+
+def _while_held(words: list[str], i: int) -> bool:
+    """ "turn the lamp on while you hold it": the "while" of one examination under a lamp (the holding and the
+    light at once), which frees no order between tasks (session 35: it let "..., but they can wait till you've
+    done the lamp" pass with no order)."""
+    after = words[i + 1 : i + 4]
+    held = after[:1] == ["holding"] or after[:2] in (["you", "hold"], ["you're", "holding"])
+    return words[i] == "while" and held
 
 
 def _remarks(text: str, per_group_only: bool) -> list[FreeOrder]:
