@@ -27,14 +27,20 @@ def test_an_order_said_after_its_task_is_read() -> None:
     assert len(tasks) == 2 and before == [("B", "A")]
 
 
-def test_a_wait_till_the_task_before_is_done_is_named_when_no_reading_orders_it() -> None:
+@pytest.mark.parametrize(
+    "text",
+    [
+        "Put the remote on the sofa. Put both watches on the end table, but they can wait till you've done "
+        "that.",
+        # (the "while" of one examination under a lamp frees no order between tasks)
+        "Pick up the remote on the dresser and turn the floor lamp on while you hold it. Both watches on the "
+        "coffee table go to the round black end table, but they can wait till you've done the lamp.",
+    ],
+)
+def test_a_wait_till_the_task_before_is_done_is_named_when_no_reading_orders_it(text: str) -> None:
     """ "till" is an order word of check 1 (session 35): the learned reading of "..., but they can wait till
     you've done that" (no order) passed check 1 at exit 0 before; now the clause is named."""
-    text = (
-        "Put the remote on the sofa. Put both watches on the end table, but they can wait till you've done "
-        "that."
-    )
-    assert "wait till you've done that" in refusal(text, shared_world("FloorPlan217"))
+    assert "can wait till you've done" in refusal(text, shared_world("FloorPlan217"))
 
 
 def test_those_two_after_three_tasks_is_refused_by_name() -> None:

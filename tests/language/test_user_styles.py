@@ -397,12 +397,10 @@ KNOWN_WRONG: set[str] = {
     # ("beside the bread") read as what is washed (h310: now partial, its "Clause 4.1" heading unread)
     "Clause 4.1. The Contractor shall wash the spoon found on the counter beside the bread and shall "
     "thereafter place the said spoon upon the microwave stand. Time is of the essence.",
-    # the retrained models of session 35 (h309's lexicon names changed their training data): "X, but they can
-    # wait till you've done the lamp" drops the wait's order at exit 0 (the old models refused this line;
-    # "... done that" is named since "till" is an order word of check 1, the lamp's task is not); "heat an egg
-    # and put it on the counter first" after a sentence of its own is ordered after it (users_h183held)
-    "Pick up the remote on the dresser and turn the floor lamp on while you hold it. Both watches on the "
-    "coffee table go to the round black end table, but they can wait till you've done the lamp.",
+    # the retrained models of session 35 (h309's lexicon names changed their training data): "heat an egg and
+    # put it on the counter first" after a sentence of its own is ordered after it (users_h183held);
+    # paper_h301's "..., but they can wait till you've done the lamp", read with no order, is refused by name
+    # since check 1 counts "till" and a held thing's "while" frees no order
     "clean the bowl and put it in the microwave. heat an egg and put it on the counter first",
 }
 
