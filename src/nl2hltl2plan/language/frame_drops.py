@@ -58,7 +58,8 @@ def frames_dropped(
     the request is for (see the module docstring). What only the general filler rule drops is added to
     `dropped` (a time fragment too); what the lists alone find empty is left to each reader's own policy
     for greetings and thanks (`courtesy.without_greetings`): dropping it here would drop, unsaid, the
-    words the readers read ("First, though, ...", "Oh, and also ...")."""
+    words the readers read ("First, though, ...", "Oh, and also ..."). With `signed_out` (the reader's own
+    test of a thing), a closing thing's name it passes is taken out, for the reader to name it unread."""
     seen = Dropped(dropped, names, only_general=True)
     # (the household's references, "Recipe card no. 7", "p. 14": said in full, h279)
     sentences = _SENTENCE_END.split((references_in_full(text) if times else text).strip())
