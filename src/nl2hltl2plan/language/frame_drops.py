@@ -50,7 +50,7 @@ def frames_dropped(
     names: frozenset[str],
     dropped: list[str] | None = None,
     times: bool = False,
-    signed_out: Callable[[str], bool] | None = None,
+    closing_thing: Callable[[str], bool] | None = None,
 ) -> str:
     """`text` without the sentences, labels, leading and closing phrases that name nothing a task needs
     (`handover_discourse.empty`, the world's `names` as content words): "Breathe in, friends.", "Campers,
@@ -58,14 +58,14 @@ def frames_dropped(
     the request is for (see the module docstring). What only the general filler rule drops is added to
     `dropped` (a time fragment too); what the lists alone find empty is left to each reader's own policy
     for greetings and thanks (`courtesy.without_greetings`): dropping it here would drop, unsaid, the
-    words the readers read ("First, though, ...", "Oh, and also ..."). With `signed_out` (the reader's own
+    words the readers read ("First, though, ...", "Oh, and also ..."). With `closing_thing` (the reader's own
     test of a thing), a closing thing's name it passes is taken out, for the reader to name it unread."""
     seen = Dropped(dropped, names, only_general=True)
     # (the household's references, "Recipe card no. 7", "p. 14": said in full, h279)
     sentences = _SENTENCE_END.split((references_in_full(text) if times else text).strip())
     # "Night, Mug": a sign-off before a thing's name stays whole, to be refused by name (`thing_signed`);
-    # with `signed_out` (the reader's own test of a thing, which names it unread) it is taken out here
-    thing = signed_out or (lambda name: name.lower() in names)
+    # with `closing_thing` (the reader's own test of a thing, which names it unread) it is taken out here
+    thing = closing_thing or (lambda name: name.lower() in names)
     kept = sentences.pop() if _thing_sign_off(sentences, thing) else None
     # "Night, Bo": a sign-off and its writer's name, both (said after what the sentences before drop)
     signed: list[str] | None = None if dropped is None else []
@@ -104,7 +104,7 @@ def frames_dropped(
         out.append(said + end if end in ".!?" and not said.endswith(end) else said)
     if dropped is not None and signed:
         dropped.extend(signed)
-    return " ".join(s for s in [*out, "" if signed_out is not None else kept or ""] if s)
+    return " ".join(s for s in [*out, "" if closing_thing is not None else kept or ""] if s)
 
 
 def _unknown_name(word: str, names: frozenset[str]) -> bool:
@@ -119,11 +119,10 @@ def _led_name(sentences: list[str], names: frozenset[str]) -> bool:
     """Whether the last of several sentences is a writer's name (`_unknown_name`) after a short lead the
     sign-off lists lack and that names no thing ("Later, Bo", "See you later, Priya", h307): nothing follows
     to be ordered, so the lead orders nothing."""
-    m = _SIGNED.fullmatch(sentences[-1]) if len(sentences) > 1 else None
+    m = _closing_signed(sentences)
     if m is None or not m["off"] or not _unknown_name(m["name"], names):
         return False
-    words = m["off"].lower().split()
-    return len(words) <= _CLOSING_LEAD_WORDS and not any(w.strip(".!") in names for w in words)
+    return _short_lead(m["off"].lower().split(), lambda w: w in names)
 
 
 # a word called after a comma where a sentence ends ("..., Bo.", "..., Kit!")
@@ -147,18 +146,27 @@ _SIGNED = re.compile(r"\s*(?:(?P<off>[^,]+?)\s*,\s*)?(?P<name>(?:The\s+)?[A-Z][a
 _CLOSING_LEAD_WORDS = 3  # "See you later, Kettle": a salutation or an order word before the name
 
 
+def _closing_signed(sentences: list[str]) -> re.Match[str] | None:
+    """The last of several sentences as a sign-off and a name, or a name alone (`_SIGNED`)."""
+    return _SIGNED.fullmatch(sentences[-1]) if len(sentences) > 1 else None
+
+
+def _short_lead(words: list[str], names_a_thing: Callable[[str], bool]) -> bool:
+    """Whether the words before a closing name are a short lead that names no thing ("Later", "See you
+    later")."""
+    return len(words) <= _CLOSING_LEAD_WORDS and not any(names_a_thing(w.strip(".!")) for w in words)
+
+
 def _thing_sign_off(sentences: list[str], names_a_thing: Callable[[str], bool]) -> bool:
     """Whether the last of several sentences is one capitalised name that names a thing (`names_a_thing`),
     alone or after a sign-off the frame rule drops ("Night", "Peace", "Okay") or any short lead that names
     no thing ("Later", "See you later": an order word, h307): a writer's name or one more item, verbless
     either way, so never read as a second task (a lowercase "the bread too" asks one)."""
-    m = _SIGNED.fullmatch(sentences[-1]) if len(sentences) > 1 else None
+    m = _closing_signed(sentences)
     if m is None or not names_a_thing(m["name"].split()[-1]):  # ("The Mug": the mug)
         return False
     off = m["off"] or ""
-    words = off.split()
-    lead = len(words) <= _CLOSING_LEAD_WORDS and not any(names_a_thing(w.strip(".!")) for w in words)
-    return not off or empty(off, edge=True, outer=True) or lead
+    return not off or empty(off, edge=True, outer=True) or _short_lead(off.split(), names_a_thing)
 
 
 def thing_signed(text: str, names_a_thing: Callable[[str], bool]) -> list[Unread]:

@@ -214,12 +214,12 @@ def unknown_things(instruction: str, toks: Tokens | None = None) -> list[Unread]
     return out
 
 
-def thing_alone(sentence: str) -> bool:
-    """Whether `sentence` names, alone or added ("The giraffe.", "The zebra too."), a thing English knows as a
+def thing_alone(sentence: str) -> str | None:
+    """The thing `sentence` names, alone or added ("The giraffe.", "The zebra too."), that English knows as a
     noun and no word table does: a thing the world lacks, which the frame rule keeps for check 1 to name
-    (h307; "The end.", "The usual." name no thing)."""
+    (h307; "The end.", "The usual." name no thing); None where it names none."""
     m = _ALSO_SAID.fullmatch(sentence.strip())
-    return m is not None and _thing_said(m)
+    return m.group(1).lower() if m is not None and _thing_said(m) else None
 
 
 def _thing_said(m: re.Match[str]) -> bool:

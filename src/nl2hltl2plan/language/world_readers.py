@@ -155,8 +155,8 @@ def _thing_words(text: str) -> frozenset[str]:
     verbs = frozenset().union(*vocabulary().values())
     treated = {w for w in words if w.endswith("ed") and {w[:-1], w[:-2], w[:-3]} & verbs}
     # and a thing the lexicon lacks named alone ("The giraffe."): kept for check 1 to name, h307
-    alone = {w for s in re.split(r"(?<=[.!?])\s+", text) if thing_alone(s) for w in s.lower().split()[1:2]}
-    return frozenset(w for w in words if find_mentions(w)) | treated | {w.strip(".!?") for w in alone}
+    alone = {w for s in re.split(r"(?<=[.!?])\s+", text) if (w := thing_alone(s))}
+    return frozenset(w for w in words if find_mentions(w)) | treated | alone
 
 
 class _HouseholdReader(SharedGrammar):
@@ -189,7 +189,7 @@ class _HouseholdReader(SharedGrammar):
         self.frames = []
         # ("Night, Mug", "Later, Bread": a closing thing's name, taken out below and named unread, h307)
         self.later_days = later_days_unread(text) + thing_signed(text, _names_a_thing)
-        text = frames_dropped(text, _thing_words(text), self.frames, times=True, signed_out=_names_a_thing)
+        text = frames_dropped(text, _thing_words(text), self.frames, times=True, closing_thing=_names_a_thing)
         self.deadlines = []
         text = deadlines_dropped(text, _thing_words(text), self.deadlines, self.frames)
         # a heading whose name is a thing's ("Prep card:", "Lamp game:"): the frame rule keeps thing words
