@@ -11,7 +11,12 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
-from nl2hltl2plan.language.content_words import phrase_list_pattern, phrase_words, vocabulary, word_categories
+from nl2hltl2plan.language.content_words import (
+    frame_keeps,
+    phrase_list_pattern,
+    phrase_words,
+    vocabulary,
+)
 from nl2hltl2plan.language.spelling import american, english_lemmas, english_word
 
 
@@ -166,8 +171,7 @@ def heading_words(label: str) -> bool:
 def _not_in_heading() -> frozenset[str]:
     """The words a heading never holds: `_NOT_IN_HEADING`, `frame_keeps.txt`'s (they add, hedge, say a
     time or a place: "Optional:", "Top shelf:") and `voice_remarks.txt`'s `never_heading` ("Done:")."""
-    keeps = frozenset().union(*word_categories("frame_keeps.txt").values())
-    return _NOT_IN_HEADING | keeps | phrase_words("voice_remarks.txt", "never_heading")
+    return _NOT_IN_HEADING | frame_keeps() | phrase_words("voice_remarks.txt", "never_heading")
 
 
 # the readers' word kinds a heading may use as nouns ("Warm-up set", "Power cut"): things and actions; a
