@@ -111,9 +111,17 @@ def untouched_said(text: str) -> str:
     """
 
     def banned(m: re.Match[str]) -> str:
-        named = find_mentions(m["x"].lower())
-        if len(named) != 1 or m["x"].lower()[named[0].char_end :].strip():
-            return m[0]
-        return f"{m['lead']}don't touch {m['x']}"
+        return f"{m['lead']}don't touch {m['x']}" if names_one_thing(m["x"]) else m[0]
 
     return _HANDS_OFF.sub(banned, text)
+
+
+def names_one_thing(phrase: str) -> bool:
+    """Whether the lexicon names exactly one thing in `phrase`, and nothing follows it ("the vases"; not
+    "the vases and the mug", not "the mug of the day"): the object a ban said without "don't" is about.
+
+    >>> names_one_thing("the vases"), names_one_thing("the mug and the cup")
+    (True, False)
+    """
+    named = find_mentions(phrase.lower())
+    return len(named) == 1 and not phrase.lower()[named[0].char_end :].strip()

@@ -41,6 +41,7 @@ from nl2hltl2plan.language.grounding import (
     sentence_start,
     tokens,
 )
+from nl2hltl2plan.language.negation_forms import names_one_thing
 from nl2hltl2plan.language.order_words import until_first_at
 from nl2hltl2plan.language.spec_builder import spec_name
 from nl2hltl2plan.language.task_specs import BaseTaskSpec, ConstraintSpec
@@ -544,8 +545,7 @@ def unmoved_said(text: str) -> str:
 
     def unmoved(m: re.Match[str]) -> str:
         thing = m["x"] or m["y"]
-        named = find_mentions(thing.lower())
-        if len(named) != 1 or thing.lower()[named[0].char_end :].strip():
+        if not names_one_thing(thing):
             return m[0]
         lead = m[0][: len(m[0]) - len(m[0].lstrip())]
         # "... and leave X alone", ", leaving X be": untouched, more than unmoved (users_h195held's truth;
